@@ -1,0 +1,41 @@
+# Flag sets shared by every mptrack target, as INTERFACE libraries.
+
+# Bit-exactness (spec: developers' guide rule 2, style_anchors.md section 10):
+# - -ffp-contract=off: no fused multiply-add, so a*b+c rounds twice on every
+#   target (aarch64 and Cortex-M7 have FMA, baseline x86-64 does not).
+# - EIGEN_DONT_VECTORIZE: Eigen's packet math uses FMA intrinsics and
+#   ISA-dependent reduction orders; with it off, x86-64, aarch64 and armhf
+#   produce identical bits (measured, see README).
+# - never -ffast-math / -Ofast.
+add_library(mptrack_deterministic INTERFACE)
+add_library(mptrack::deterministic ALIAS mptrack_deterministic)
+target_compile_options(mptrack_deterministic INTERFACE -ffp-contract=off ${mptrack_cpu_flags})
+target_compile_definitions(mptrack_deterministic INTERFACE EIGEN_DONT_VECTORIZE EIGEN_MPL2_ONLY)
+target_link_options(mptrack_deterministic INTERFACE ${mptrack_cpu_flags})
+target_compile_features(mptrack_deterministic INTERFACE cxx_std_17)
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64" AND NOT CMAKE_CROSSCOMPILING)
+  # SSE2 scalar math only; never x87 (excess precision breaks bit-exactness).
+  target_compile_options(mptrack_deterministic INTERFACE -mfpmath=sse -msse2)
+endif()
+
+# Warnings: strict for our own code (PX4-Matrix / doctest set).
+add_library(mptrack_warnings INTERFACE)
+add_library(mptrack::warnings ALIAS mptrack_warnings)
+target_compile_options(mptrack_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion
+  -Wold-style-cast -Wdouble-promotion -Wfloat-conversion -Wcast-align -Wundef
+  -Wnon-virtual-dtor)
+option(MPTRACK_WERROR "Treat warnings as errors" ON)
+if(MPTRACK_WERROR)
+  target_compile_options(mptrack_warnings INTERFACE -Werror)
+endif()
+
+# Embedded discipline: what a target build uses (also applied to the host
+# core objects, so the host build proves the same rules).
+add_library(mptrack_embedded INTERFACE)
+add_library(mptrack::embedded ALIAS mptrack_embedded)
+target_compile_options(mptrack_embedded INTERFACE
+  $<$<COMPILE_LANGUAGE:CXX>:-fno-exceptions -fno-rtti>
+  -ffunction-sections -fdata-sections)
+
+set(CMAKE_CXX_EXTENSIONS OFF)

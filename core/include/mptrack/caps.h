@@ -1,0 +1,51 @@
+// Compile-time capacity traits ("caps"). Every buffer in core is sized from
+// one of these types; nothing is sized at run time.
+//
+// A caps type is any struct with the static members below. Pass it as the
+// Caps template parameter of a core component, e.g.
+//   mptrack::MfbpTracker<float, mptrack::SmallBoardCaps> tracker;  // placed in .bss
+// Run-time tunables never live here: they are in each component's Params
+// struct (units and defaults there), validated once by init().
+#pragma once
+
+#include <cstddef>
+
+namespace mptrack {
+
+/// Default caps: a mid-range Cortex-M7 / Cortex-A board.
+struct DefaultCaps {
+  static constexpr std::size_t kMaxTargets = 64;            ///< tracks alive at once
+  static constexpr std::size_t kMaxMeasurements = 256;      ///< detections per scan
+  static constexpr std::size_t kMaxClutterComponents = 8;   ///< non-uniform clutter components
+  static constexpr std::size_t kMaxWindow = 7;              ///< smoothing window length K (scans)
+};
+
+/// Small board: fits a 64 KiB RAM budget (see README, footprint report).
+struct SmallBoardCaps {
+  static constexpr std::size_t kMaxTargets = 16;
+  static constexpr std::size_t kMaxMeasurements = 64;
+  static constexpr std::size_t kMaxClutterComponents = 4;
+  static constexpr std::size_t kMaxWindow = 7;
+};
+
+/// Large: Cortex-A class cores with MiBs of RAM.
+struct LargeCaps {
+  static constexpr std::size_t kMaxTargets = 256;
+  static constexpr std::size_t kMaxMeasurements = 1024;
+  static constexpr std::size_t kMaxClutterComponents = 8;
+  static constexpr std::size_t kMaxWindow = 7;
+};
+
+/// Compile-time validation of a caps type; every component calls it in a
+/// static_assert so a bad preset fails to build with a readable message.
+template <class Caps>
+constexpr bool caps_are_valid() {
+  static_assert(Caps::kMaxTargets >= 1, "Caps::kMaxTargets must be >= 1");
+  static_assert(Caps::kMaxMeasurements >= 1, "Caps::kMaxMeasurements must be >= 1");
+  static_assert(Caps::kMaxWindow >= 1, "Caps::kMaxWindow must be >= 1");
+  static_assert(Caps::kMaxTargets <= 4096 && Caps::kMaxMeasurements <= 65535,
+                "caps beyond 4096 targets / 65535 measurements are not supported (16-bit indices)");
+  return true;
+}
+
+}  // namespace mptrack

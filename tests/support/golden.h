@@ -1,0 +1,54 @@
+// Golden-vector files: outputs recorded as exact hex bit patterns.
+//
+// A golden test records every value it wants pinned, then compares the whole
+// record with the committed file tests/golden/data/<name>.golden:
+//
+//   mptrack::test::GoldenFile g("detmath");
+//   g.add("dexp_f", y);            // float  -> "dexp_f f32 3f800000"
+//   g.add("dexp_d", yd);           // double -> "dexp_d f64 3ff0000000000000"
+//   CHECK(g.matches());
+//
+// The same file is compared on x86-64 and, under qemu-user, on aarch64 and
+// armhf: passing everywhere is the proof of cross-target bit-exactness.
+//
+// Regenerate mode: MPTRACK_GOLDEN_REGENERATE=1 ctest -R golden rewrites the
+// files instead of comparing (review the diff, then commit). It refuses to
+// run when CI is set, so CI can never bless its own output.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mptrack::test {
+
+class GoldenFile {
+ public:
+  explicit GoldenFile(std::string name);
+
+  void add(const std::string& label, float v);
+  void add(const std::string& label, double v);
+  void add(const std::string& label, std::int64_t v);
+  void add(const std::string& label, std::uint64_t v) { add(label, static_cast<std::int64_t>(v)); }
+  void add(const std::string& label, int v) { add(label, static_cast<std::int64_t>(v)); }
+  void add(const std::string& label, unsigned v) { add(label, static_cast<std::int64_t>(v)); }
+
+  /// Compares the recorded lines with the committed file (or rewrites it in
+  /// regenerate mode). On mismatch prints the first differing lines and a
+  /// count to stderr and returns false.
+  bool matches() const;
+
+  std::size_t size() const { return lines_.size(); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::vector<std::string> lines_;
+};
+
+/// Bit pattern of a float/double as lower-case hex (for messages and tests).
+std::string hex_bits(float v);
+std::string hex_bits(double v);
+
+}  // namespace mptrack::test
