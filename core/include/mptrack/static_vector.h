@@ -1,8 +1,11 @@
 // StaticVector<T, N>: a fixed-capacity vector stored inside the object.
 //
-// std::array<T, N> plus a size. T must be trivially copyable and default
-// constructible (our measurements, tracks and components are PODs), which is
-// why no placement-new or aligned_storage is needed (compare ETL's vector).
+// std::array<T, N> plus a size. T must own no resources: trivially
+// destructible, default constructible and copy-assignable. Our
+// measurements and reports are PODs or hold fixed-size Eigen matrices (which
+// are not trivially copyable only because Eigen declares its copy
+// constructor); none of them allocates, so no placement-new or
+// aligned_storage is needed (compare ETL's vector).
 // push_back always checks capacity and reports overflow as a Status, in
 // release builds too: unlike gtrack we never clamp silently.
 #pragma once
@@ -18,8 +21,11 @@ namespace mptrack {
 template <class T, std::size_t N>
 class StaticVector {
   static_assert(N > 0, "a zero-capacity StaticVector is not useful");
-  static_assert(std::is_trivially_copyable<T>::value, "StaticVector holds trivially copyable types only");
-  static_assert(std::is_default_constructible<T>::value, "StaticVector needs default-constructible T");
+  static_assert(std::is_trivially_destructible<T>::value,
+                "StaticVector holds types that own no resources (trivially destructible)");
+  static_assert(std::is_default_constructible<T>::value &&
+                    std::is_copy_assignable<T>::value,
+                "StaticVector needs default construction and copy assignment");
 
  public:
   using value_type = T;

@@ -1,0 +1,76 @@
+// What every tracker in core reports: per finalised scan, the tracks (and,
+// where estimated, the clutter map) plus counters. The host harness, the
+// metrics and the golden tests only see these types, so trackers are
+// interchangeable (MF-BP, its ablations, GM-PHD/CPHD, GNN).
+//
+// Tracker contract (duck-typed, no virtual calls in core):
+//   using Scalar = T;   using ScanType = Scan<T, Caps::kMaxMeasurements>;
+//   Status init(const Params&);     validates once; nothing else may be called before it succeeds
+//   Status step(const ScanType&);   consumes one scan (time strictly increasing)
+//   Status flush();                 end of data: finalises every scan still held back
+//   const OutputQueue& outputs() const;   estimates finalised by the last step()/flush()
+//   const TrackerCounters& counters() const;
+// An online filter finalises one scan per step. A sliding-window smoother
+// finalises scans in batches with a lag (seed 000: window 7, slide 3).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "mptrack/static_vector.h"
+
+namespace mptrack {
+
+/// One track at one finalised scan. State order [px, vx, py, vy] (seed 000 spec 1.1).
+template <class T>
+struct TrackReport {
+  std::uint32_t id = 0;                   ///< stable across scans; never reused within a run
+  Eigen::Matrix<T, 4, 1> state = Eigen::Matrix<T, 4, 1>::Zero();       ///< [m, m/s, m, m/s]
+  Eigen::Matrix<T, 4, 4> covariance = Eigen::Matrix<T, 4, 4>::Zero();  ///< of state
+  T existence = T(0);                     ///< P(target present/visible) at this scan [-]
+  T snr = T(0);                           ///< estimated mean SNR, linear [-] (0 if not estimated)
+  bool confirmed = false;                 ///< passed the confirmation rule
+  std::int32_t measurement_index = -1;    ///< most likely measurement at this scan, -1 = missed
+};
+
+/// One clutter component of the estimated clutter map (measurement space).
+template <class T>
+struct ClutterReport {
+  std::uint32_t id = 0;
+  bool uniform = false;                   ///< the uniform component (spec tau = 0)
+  Eigen::Matrix<T, 2, 1> mean = Eigen::Matrix<T, 2, 1>::Zero();        ///< [range m, azimuth rad]
+  Eigen::Matrix<T, 2, 2> covariance = Eigen::Matrix<T, 2, 2>::Zero();  ///< spread [m^2, m rad; ., rad^2]
+  T expected_count = T(0);                ///< expected clutter measurements per scan [-]
+  T cnr = T(0);                           ///< estimated mean clutter-to-noise ratio, linear [-]
+};
+
+/// Everything a tracker says about one finalised scan.
+template <class T, std::size_t MaxTargets, std::size_t MaxClutter>
+struct ScanEstimate {
+  std::uint64_t time_us = 0;              ///< time of the scan this estimate is for
+  std::uint32_t scan_index = 0;           ///< 0-based index of that scan in the tracker's input
+  StaticVector<TrackReport<T>, MaxTargets> tracks;
+  StaticVector<ClutterReport<T>, MaxClutter + 1> clutter;  ///< + 1: the uniform component
+};
+
+/// Counters every tracker keeps; nothing is dropped without being counted.
+struct TrackerCounters {
+  std::uint64_t scans = 0;                    ///< scans accepted by step()
+  std::uint64_t scans_rejected = 0;           ///< scans refused whole (bad time, not initialised)
+  std::uint64_t measurements_in = 0;          ///< measurements offered
+  std::uint64_t measurements_invalid = 0;     ///< rejected: NaN/Inf, out of region, amplitude <= threshold
+  std::uint64_t measurements_over_cap = 0;    ///< dropped by an internal cap (policy documented per tracker)
+  std::uint64_t tracks_born = 0;
+  std::uint64_t tracks_confirmed = 0;
+  std::uint64_t tracks_deleted = 0;
+  std::uint64_t track_cap_hits = 0;           ///< births refused because kMaxTargets tracks were alive
+  std::uint64_t clutter_born = 0;
+  std::uint64_t clutter_deleted = 0;
+  std::uint64_t clutter_cap_hits = 0;
+  std::uint64_t bp_not_converged = 0;         ///< BP runs that hit the iteration cap
+  std::uint64_t numerical_repairs = 0;        ///< covariances re-symmetrised / regularised
+};
+
+}  // namespace mptrack
