@@ -6,7 +6,7 @@
 # - EIGEN_DONT_VECTORIZE: Eigen's packet math uses FMA intrinsics and
 #   ISA-dependent reduction orders; with it off, x86-64, aarch64 and armhf
 #   produce identical bits (measured, see README).
-# - never -ffast-math / -Ofast.
+# - never the fast-math flag family (it reorders and contracts freely).
 add_library(mptrack_deterministic INTERFACE)
 add_library(mptrack::deterministic ALIAS mptrack_deterministic)
 target_compile_options(mptrack_deterministic INTERFACE -ffp-contract=off ${mptrack_cpu_flags})
