@@ -1,0 +1,196 @@
+// Stage 3: angle processing across the virtual array.
+//
+// (a) FFT beamformer. For each range bin g and Doppler index d, the
+//     windowed snapshot x_v (v = 0..N_V-1) is zero-padded to N_A =
+//     kNumAngleBins and transformed:
+//       B(g, d, h) = sum_v w_v x_v exp(-j 2 pi h v / N_A),   h = a - N_A/2,
+//     i.e. the matched filter against the steering vector
+//       [a(u)]_v = exp(j 2 pi (d/lambda) v u),  u = sin(theta_b),
+//     sampled at u_h = h / (N_A d/lambda) (spec 2.1 step 4: for d = lambda/2,
+//     N_A = 64, u_h = h/32). The stage stores the power map |B|^2 laid out
+//     [d][a][g] so that range lines (the CFAR axis) are contiguous. Bins with
+//     |u_h| > sin(max_abs_bearing_rad) (or > 1, invisible space) are flagged
+//     untested.
+// (b) Refinement: the exact matched filter f(u) = |a(u)^H diag(w) x|^2 is
+//     maximised by golden-section search over one grid step either side of
+//     the FFT peak (unimodal there: the main lobe is 2/(N_V d/lambda) wide in
+//     u, wider than two grid steps because N_A >= N_V). The phasors are a
+//     fixed-order recurrence from one dmath::dsincos, so the result is
+//     bit-exact across targets.
+//
+// Bearing convention: theta_b is measured from boresight (+y) towards the +x
+// axis along which the array lies (spec 1.1: theta = atan2(x, y)). See
+// measurement_convert.h for the mapping to Measurement::azimuth_rad.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "mptrack/dsp/fft.h"
+#include "mptrack/frontend/doppler_processor.h"
+#include "mptrack/frontend/frontend_params.h"
+#include "mptrack/frontend/window.h"
+#include "mptrack/math/constants.h"
+#include "mptrack/math/detmath.h"
+#include "mptrack/status.h"
+#include "mptrack/validate.h"
+
+namespace mptrack::frontend {
+
+/// Result of the steering-vector refinement.
+struct AngleEstimate {
+  float u = 0.0f;      ///< sine of theta_b [-]
+  float power = 0.0f;  ///< |a(u)^H diag(w) x|^2 at u (same units as the power map)
+};
+
+template <class Caps>
+class AngleProcessor {
+  static_assert(radar_caps_are_valid<Caps>());
+
+ public:
+  static constexpr std::size_t kNa = Caps::kNumAngleBins;
+  static constexpr std::size_t kNc = Caps::kNumChirps;
+  static constexpr std::size_t kNumVirtual = Caps::kNumTx * Caps::kNumRx;
+  static constexpr std::size_t kNumRangeBins = Caps::kNumRangeBins;
+  static constexpr std::size_t kMapSize = kNc * kNa * kNumRangeBins;
+
+  Status init(const FrontEndParams& p) {
+    initialized_ = false;
+    MPTRACK_TRY(check(is_valid_window(p.angle_window)));
+    MPTRACK_TRY(check_range(p.element_spacing_wavelengths, 1e-3, 1.0));
+    MPTRACK_TRY(check_range(p.max_abs_bearing_rad, 1e-6,
+                            mptrack::dmath::kHalfPi<double>));
+    MPTRACK_TRY(check(p.angle_refine_iterations <= 64));
+    MPTRACK_TRY(fft_.init());
+    fill_window(p.angle_window, window_.data(), kNumVirtual);
+    spacing_ = p.element_spacing_wavelengths;
+    refine_iterations_ = p.angle_refine_iterations;
+    const double u_max = mptrack::dmath::dsin(p.max_abs_bearing_rad);
+    for (std::size_t a = 0; a < kNa; ++a) {
+      const double u = bin_u(a);
+      const double au = u < 0.0 ? -u : u;
+      tested_[a] = (au <= u_max && au <= 1.0);
+    }
+    initialized_ = true;
+    return Status::kOk;
+  }
+
+  /// Beamforms every (g, d) cell of dp into the power map.
+  Status process(const DopplerProcessor<Caps>& dp) {
+    if (!initialized_) return Status::kNotInitialized;
+    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+      for (std::size_t d = 0; d < kNc; ++d) {
+        const float* xr = dp.snapshot_re(g, d);
+        const float* xi = dp.snapshot_im(g, d);
+        for (std::size_t v = 0; v < kNumVirtual; ++v) {
+          buf_re_[v] = xr[v] * window_[v];
+          buf_im_[v] = xi[v] * window_[v];
+        }
+        for (std::size_t v = kNumVirtual; v < kNa; ++v) {
+          buf_re_[v] = 0.0f;
+          buf_im_[v] = 0.0f;
+        }
+        fft_.forward(buf_re_.data(), buf_im_.data());
+        for (std::size_t k = 0; k < kNa; ++k) {
+          const std::size_t a = (k + kNa / 2) % kNa;  // fftshift: a = h + N_A/2
+          map_[map_index(g, d, a)] = buf_re_[k] * buf_re_[k] + buf_im_[k] * buf_im_[k];
+        }
+      }
+    }
+    return Status::kOk;
+  }
+
+  /// Exact steering-vector matched filter |a(u)^H diag(w) x|^2 for a snapshot.
+  float steering_power(const float* xr, const float* xi, float u) const {
+    float s = 0.0f;
+    float c = 1.0f;
+    const float phase = -mptrack::dmath::kTwoPi<float> * static_cast<float>(spacing_) * u;
+    mptrack::dmath::dsincos(phase, s, c);
+    float pr = 1.0f;  // phasor e^{-j 2 pi (d/lambda) v u}, by recurrence
+    float pi = 0.0f;
+    float acc_r = 0.0f;
+    float acc_i = 0.0f;
+    for (std::size_t v = 0; v < kNumVirtual; ++v) {
+      const float yr = xr[v] * window_[v];
+      const float yi = xi[v] * window_[v];
+      acc_r = acc_r + (yr * pr - yi * pi);
+      acc_i = acc_i + (yr * pi + yi * pr);
+      const float nr = pr * c - pi * s;
+      const float ni = pr * s + pi * c;
+      pr = nr;
+      pi = ni;
+    }
+    return acc_r * acc_r + acc_i * acc_i;
+  }
+
+  /// Refines the angle of the snapshot (g, d) around grid bin a.
+  AngleEstimate refine(const DopplerProcessor<Caps>& dp, std::size_t g, std::size_t d,
+                       std::size_t a) const {
+    const float* xr = dp.snapshot_re(g, d);
+    const float* xi = dp.snapshot_im(g, d);
+    AngleEstimate best;
+    best.u = static_cast<float>(bin_u(a));
+    best.power = steering_power(xr, xi, best.u);
+    if (refine_iterations_ == 0) return best;
+    const float step = static_cast<float>(1.0 / (static_cast<double>(kNa) * spacing_));
+    float lo = best.u - step;
+    float hi = best.u + step;
+    if (lo < -1.0f) lo = -1.0f;
+    if (hi > 1.0f) hi = 1.0f;
+    // Golden-section search (Kiefer 1953), fixed iteration count.
+    constexpr float kInvPhi = 0.618033988749894848f;
+    float x1 = hi - kInvPhi * (hi - lo);
+    float x2 = lo + kInvPhi * (hi - lo);
+    float f1 = steering_power(xr, xi, x1);
+    float f2 = steering_power(xr, xi, x2);
+    for (std::size_t it = 0; it < refine_iterations_; ++it) {
+      if (f1 > best.power) best = AngleEstimate{x1, f1};
+      if (f2 > best.power) best = AngleEstimate{x2, f2};
+      if (f1 >= f2) {  // maximum in [lo, x2]
+        hi = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = hi - kInvPhi * (hi - lo);
+        f1 = steering_power(xr, xi, x1);
+      } else {
+        lo = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = lo + kInvPhi * (hi - lo);
+        f2 = steering_power(xr, xi, x2);
+      }
+    }
+    if (f1 > best.power) best = AngleEstimate{x1, f1};
+    if (f2 > best.power) best = AngleEstimate{x2, f2};
+    return best;
+  }
+
+  /// sin(theta_b) at the centre of angle bin a.
+  double bin_u(std::size_t a) const {
+    const double h = static_cast<double>(a) - static_cast<double>(kNa / 2);
+    return h / (static_cast<double>(kNa) * spacing_);
+  }
+
+  static constexpr std::size_t map_index(std::size_t g, std::size_t d, std::size_t a) {
+    return (d * kNa + a) * kNumRangeBins + g;
+  }
+  /// Power map |B|^2, layout [d][a][g] (range contiguous).
+  const float* power_map() const { return map_.data(); }
+  float power(std::size_t g, std::size_t d, std::size_t a) const { return map_[map_index(g, d, a)]; }
+  /// False for angle bins outside the configured span (not CFAR-tested).
+  bool angle_tested(std::size_t a) const { return tested_[a]; }
+  bool initialized() const { return initialized_; }
+
+ private:
+  dsp::Fft<kNa> fft_{};
+  std::array<float, kNumVirtual> window_{};
+  alignas(16) std::array<float, kNa> buf_re_{};
+  alignas(16) std::array<float, kNa> buf_im_{};
+  std::array<float, kMapSize> map_{};
+  std::array<bool, kNa> tested_{};
+  double spacing_ = 0.5;
+  std::size_t refine_iterations_ = 0;
+  bool initialized_ = false;
+};
+
+}  // namespace mptrack::frontend

@@ -1,0 +1,291 @@
+// The MIMO matched-filter front end: raw ADC cube -> Scan of measurements.
+//
+//   FrontEnd<Seed004RadarCaps> fe;            // ~40 KB, place it statically
+//   MPTRACK_TRY(fe.init(FrontEndParams{}));   // validates, builds all tables
+//   per frame:
+//     Status s = fe.process(cube, scan);      // scan: Scan<float, N>
+//
+// Pipeline (spec 2.1): RangeMatchedFilter (fast-time pulse compression) ->
+// DopplerProcessor (slow-time FFT when kNumChirps > 1) -> AngleProcessor
+// (FFT beamformer, power map [d][a][g]) -> detection: every cell inside the
+// range gate and the angle span that is a local maximum of the map (3x3x3
+// neighbourhood; Doppler wraps; ties go to the lower cell index) and passes
+// the CFAR test along range becomes a candidate; the strongest
+// min(max_detections, Caps::kMaxDetections, N) are kept (the rest counted)
+// and refined: angle by the steering-vector matched filter, range and
+// Doppler by a parabola through the log powers of the bin and its two
+// neighbours (offset clamped to +-0.5 bin; none at the map edge).
+//
+// Measurement fields: range_m = (g + delta) c / (2 f_s); azimuth_rad =
+// bearing_to_azimuth(asin u) (CCW from +x, see measurement_convert.h);
+// doppler_mps = radial velocity, positive receding; amplitude =
+// sqrt(P_refined / z) with z the CFAR noise-power estimate, so amplitude^2
+// is the SNR-like power ratio the MF-BP amplitude models expect.
+// Measurements are ordered strongest first.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "mptrack/frontend/angle_processor.h"
+#include "mptrack/frontend/cfar.h"
+#include "mptrack/frontend/doppler_processor.h"
+#include "mptrack/frontend/frontend_params.h"
+#include "mptrack/frontend/measurement_convert.h"
+#include "mptrack/frontend/peak_list.h"
+#include "mptrack/frontend/radar_caps.h"
+#include "mptrack/frontend/radar_cube.h"
+#include "mptrack/frontend/range_matched_filter.h"
+#include "mptrack/math/detmath.h"
+#include "mptrack/measurement.h"
+#include "mptrack/status.h"
+#include "mptrack/validate.h"
+
+namespace mptrack::frontend {
+
+/// Processing stages, for per-stage timing.
+enum class FrontEndStage : std::uint8_t { kRange = 0, kDoppler, kAngle, kDetect, kCount };
+
+/// Optional per-stage timing: the caller supplies a cycle/tick source (from
+/// platform/, core does not know clocks); process() stores per-stage deltas.
+struct FrontEndStageTimes {
+  std::uint32_t (*clock)() = nullptr;  ///< monotonic tick source; nullptr = no timing
+  std::array<std::uint32_t, static_cast<std::size_t>(FrontEndStage::kCount)> ticks{};
+};
+
+/// Counters; nothing is dropped without being counted.
+struct FrontEndCounters {
+  std::uint64_t frames = 0;               ///< frames processed successfully
+  std::uint64_t frames_rejected = 0;      ///< frames refused (not initialised, NaN/Inf input)
+  std::uint64_t cells_tested = 0;         ///< CFAR tests run (local maxima in gate and span)
+  std::uint64_t detections = 0;           ///< measurements emitted
+  std::uint64_t detections_over_cap = 0;  ///< CFAR detections dropped by the per-frame cap
+};
+
+template <class Caps>
+class FrontEnd {
+  static_assert(radar_caps_are_valid<Caps>());
+
+ public:
+  static constexpr std::size_t kNc = Caps::kNumChirps;
+  static constexpr std::size_t kNa = Caps::kNumAngleBins;
+  static constexpr std::size_t kNumRangeBins = Caps::kNumRangeBins;
+
+  /// Validates every parameter and builds all tables. On failure nothing
+  /// may be processed (process() returns kNotInitialized).
+  Status init(const FrontEndParams& p) {
+    initialized_ = false;
+    MPTRACK_TRY(check_positive(p.carrier_hz));
+    MPTRACK_TRY(check(p.max_detections >= 1 && p.max_detections <= Caps::kMaxDetections));
+    MPTRACK_TRY(check(is_finite(p.min_range_m) && is_finite(p.max_range_m) &&
+                      p.min_range_m >= 0.0 && p.max_range_m > p.min_range_m));
+    MPTRACK_TRY(check_range(p.min_noise_power, 0.0, 1e30));
+    MPTRACK_TRY(rmf_.init(p));
+    MPTRACK_TRY(dop_.init(p));
+    MPTRACK_TRY(ang_.init(p));
+    MPTRACK_TRY(cfar_.init(p.cfar));
+    MPTRACK_TRY(check(cfar_.min_line_length() <= kNumRangeBins));
+    const double bin_m = frontend::range_bin_m(p);
+    range_bin_m_ = bin_m;
+    // Gate: bins whose centre lies in [min_range_m, max_range_m].
+    std::size_t g_lo = 0;
+    while (g_lo < kNumRangeBins && static_cast<double>(g_lo) * bin_m < p.min_range_m) ++g_lo;
+    std::size_t g_hi = g_lo;
+    while (g_hi < kNumRangeBins && static_cast<double>(g_hi) * bin_m <= p.max_range_m) ++g_hi;
+    MPTRACK_TRY(check(g_hi > g_lo));
+    gate_lo_ = g_lo;
+    gate_hi_ = g_hi;
+    max_detections_ = p.max_detections;
+    min_noise_ = static_cast<float>(p.min_noise_power);
+    initialized_ = true;
+    return Status::kOk;
+  }
+
+  /// Processes one frame. out is cleared first; out.time_us = cube.time_us,
+  /// out.has_doppler = (kNumChirps > 1). kNotInitialized before init();
+  /// kInvalidInput (out left empty, counted) if the cube holds NaN/Inf.
+  /// Over-cap detections: the strongest are kept, the rest counted in
+  /// counters().detections_over_cap and last_frame_dropped(); returns kOk.
+  template <class Sample, std::size_t N>
+  Status process(const RadarCubeT<Caps, Sample>& cube, Scan<float, N>& out,
+                 FrontEndStageTimes* times = nullptr) {
+    out.measurements.clear();
+    out.time_us = cube.time_us;
+    out.has_doppler = DopplerProcessor<Caps>::kHasDoppler;
+    last_dropped_ = 0;
+    if (!initialized_) {
+      ++counters_.frames_rejected;
+      return Status::kNotInitialized;
+    }
+    std::uint32_t t0 = tick(times);
+    const Status s = rmf_.process(cube);
+    if (s != Status::kOk) {
+      ++counters_.frames_rejected;
+      return s;
+    }
+    std::uint32_t t1 = tick(times);
+    stamp(times, FrontEndStage::kRange, t0, t1);
+    MPTRACK_TRY(dop_.process(rmf_));
+    t0 = tick(times);
+    stamp(times, FrontEndStage::kDoppler, t1, t0);
+    MPTRACK_TRY(ang_.process(dop_));
+    t1 = tick(times);
+    stamp(times, FrontEndStage::kAngle, t0, t1);
+    detect(N);
+    emit(out);
+    t0 = tick(times);
+    stamp(times, FrontEndStage::kDetect, t1, t0);
+    ++counters_.frames;
+    return Status::kOk;
+  }
+
+  /// Per-virtual-channel complex calibration (see RangeMatchedFilter).
+  Status set_channel_calibration(
+      const std::array<float, Caps::kNumTx * Caps::kNumRx>& re,
+      const std::array<float, Caps::kNumTx * Caps::kNumRx>& im) {
+    return rmf_.set_channel_calibration(re, im);
+  }
+
+  const FrontEndCounters& counters() const { return counters_; }
+  /// Candidates dropped by the cap in the last frame.
+  std::size_t last_frame_dropped() const { return last_dropped_; }
+  const RangeMatchedFilter<Caps>& range_stage() const { return rmf_; }
+  const DopplerProcessor<Caps>& doppler_stage() const { return dop_; }
+  const AngleProcessor<Caps>& angle_stage() const { return ang_; }
+  const Cfar& cfar() const { return cfar_; }
+  /// Range per bin c/(2 f_s) [m].
+  double range_bin_m() const { return range_bin_m_; }
+  bool initialized() const { return initialized_; }
+
+ private:
+  static std::uint32_t tick(const FrontEndStageTimes* t) {
+    return (t != nullptr && t->clock != nullptr) ? t->clock() : 0u;
+  }
+  static void stamp(FrontEndStageTimes* t, FrontEndStage s, std::uint32_t a, std::uint32_t b) {
+    if (t != nullptr) t->ticks[static_cast<std::size_t>(s)] = b - a;  // wraps correctly
+  }
+
+  bool is_local_max(std::size_t g, std::size_t d, std::size_t a, float p) const {
+    const std::size_t self = AngleProcessor<Caps>::map_index(g, d, a);
+    for (int dd = -1; dd <= 1; ++dd) {
+      std::size_t d2 = d;
+      if constexpr (kNc > 1) {
+        d2 = (d + kNc + static_cast<std::size_t>(dd + 1) - 1) % kNc;
+      } else if (dd != 0) {
+        continue;
+      }
+      for (int da = -1; da <= 1; ++da) {
+        if ((da < 0 && a == 0) || (da > 0 && a + 1 == kNa)) continue;
+        const std::size_t a2 = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(a) + da);
+        for (int dg = -1; dg <= 1; ++dg) {
+          if ((dg < 0 && g == 0) || (dg > 0 && g + 1 == kNumRangeBins)) continue;
+          const std::size_t g2 = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(g) + dg);
+          const std::size_t idx = AngleProcessor<Caps>::map_index(g2, d2, a2);
+          if (idx == self) continue;
+          const float q = ang_.power_map()[idx];
+          if (q > p || (q == p && idx < self)) return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  void detect(std::size_t scan_capacity) {
+    std::size_t cap = max_detections_ < scan_capacity ? max_detections_ : scan_capacity;
+    peaks_.reset(cap);
+    for (std::size_t d = 0; d < kNc; ++d) {
+      for (std::size_t a = 0; a < kNa; ++a) {
+        if (!ang_.angle_tested(a)) continue;
+        const float* line = ang_.power_map() + AngleProcessor<Caps>::map_index(0, d, a);
+        for (std::size_t g = gate_lo_; g < gate_hi_; ++g) {
+          const float p = line[g];
+          if (!(p > 0.0f) || !is_local_max(g, d, a, p)) continue;
+          const CfarResult r = cfar_.test(line, kNumRangeBins, g);
+          if (!r.tested) continue;
+          ++counters_.cells_tested;
+          const float noise = r.noise > min_noise_ ? r.noise : min_noise_;
+          if (!r.detected || !(noise > 0.0f)) continue;
+          PeakCandidate c;
+          c.cell = static_cast<std::uint32_t>(AngleProcessor<Caps>::map_index(g, d, a));
+          c.range_bin = static_cast<std::uint16_t>(g);
+          c.doppler_bin = static_cast<std::uint16_t>(d);
+          c.angle_bin = static_cast<std::uint16_t>(a);
+          c.power = p;
+          c.noise = noise;
+          peaks_.insert(c);
+        }
+      }
+    }
+    last_dropped_ = peaks_.dropped();
+    counters_.detections_over_cap += last_dropped_;
+  }
+
+  /// Sub-bin offset of a peak from the powers of the bin and its two
+  /// neighbours: the vertex of the parabola through the log powers
+  /// ("Gaussian" interpolation; exact for a Gaussian main lobe and nearly so
+  /// for tapered windows, far less biased than a parabola on magnitudes).
+  /// Clamped to [-0.5, 0.5]; 0 if the bin is not a strict maximum.
+  static float log_parabolic_offset(float pm, float p0, float pp) {
+    if (!(pm > 0.0f && pp > 0.0f && p0 > pm && p0 > pp)) return 0.0f;
+    const float lm = mptrack::dmath::dlog(pm);
+    const float l0 = mptrack::dmath::dlog(p0);
+    const float lp = mptrack::dmath::dlog(pp);
+    const float den = lm - 2.0f * l0 + lp;
+    if (!(den < 0.0f)) return 0.0f;
+    float off = 0.5f * (lm - lp) / den;
+    if (off > 0.5f) off = 0.5f;
+    if (off < -0.5f) off = -0.5f;
+    return off;
+  }
+
+  template <std::size_t N>
+  void emit(Scan<float, N>& out) {
+    for (std::size_t i = 0; i < peaks_.size(); ++i) {
+      const PeakCandidate& c = peaks_[i];
+      const std::size_t g = c.range_bin;
+      const std::size_t d = c.doppler_bin;
+      const std::size_t a = c.angle_bin;
+      const AngleEstimate ae = ang_.refine(dop_, g, d, a);
+      float dg = 0.0f;
+      if (g > 0 && g + 1 < kNumRangeBins) {
+        dg = log_parabolic_offset(ang_.power(g - 1, d, a), c.power, ang_.power(g + 1, d, a));
+      }
+      float dd = 0.0f;
+      if constexpr (kNc > 1) {
+        dd = log_parabolic_offset(ang_.power(g, (d + kNc - 1) % kNc, a), c.power,
+                              ang_.power(g, (d + 1) % kNc, a));
+      }
+      float u = ae.u;
+      if (u > 1.0f) u = 1.0f;
+      if (u < -1.0f) u = -1.0f;
+      const float bearing = mptrack::dmath::datan2(u, std::sqrt((1.0f - u) * (1.0f + u)));
+      Measurement<float> m;
+      m.range_m = static_cast<float>((static_cast<double>(g) + static_cast<double>(dg)) * range_bin_m_);
+      m.azimuth_rad = bearing_to_azimuth(bearing);
+      m.amplitude = std::sqrt(ae.power / c.noise);
+      m.doppler_mps =
+          static_cast<float>(dop_.velocity_mps(static_cast<double>(d) + static_cast<double>(dd)));
+      // Capacity was reserved in detect() (cap <= N), so this cannot fail.
+      if (out.measurements.push_back(m) != Status::kOk) ++counters_.detections_over_cap;
+      ++counters_.detections;
+    }
+  }
+
+  RangeMatchedFilter<Caps> rmf_{};
+  DopplerProcessor<Caps> dop_{};
+  AngleProcessor<Caps> ang_{};
+  Cfar cfar_{};
+  PeakList<Caps::kMaxDetections> peaks_{};
+  FrontEndCounters counters_{};
+  double range_bin_m_ = 0.0;
+  std::size_t gate_lo_ = 0;
+  std::size_t gate_hi_ = 0;
+  std::size_t max_detections_ = 0;
+  std::size_t last_dropped_ = 0;
+  float min_noise_ = 0.0f;
+  bool initialized_ = false;
+};
+
+}  // namespace mptrack::frontend
