@@ -1,0 +1,51 @@
+// Amplitude model of seed 000: detection probability from the threshold
+// (spec 2.4) and the truncated generalised-Rayleigh amplitude likelihood in
+// the conjugate parameterisation varsigma = 1 + SNR (spec 2.5).
+//
+// Terms common to every source of one measurement (ln 2 + (2n-1) ln m and
+// the Nakagami constant) are dropped: they cancel in the BP messages.
+#pragma once
+
+#include "mptrack/math/detmath.h"
+#include "mptrack/mfbp/mfbp_params.h"
+
+namespace mptrack::mfbp {
+
+/// Swerling case -> Gamma shape n of the received power (I: 1, III: 2).
+inline int swerling_order(int swerling) { return swerling == 3 ? 2 : 1; }
+
+/// P_D for total mean power varsigma = 1 + snr (linear), threshold d.
+/// kExact: P(u > d^2) for u ~ Gamma(n, varsigma/n) = e^-x sum_{l<n} x^l/l!,
+/// x = n d^2 / varsigma (spec 2.4 [fix]). kPaper: (P9) e^-x.
+template <class T>
+T detection_probability(T varsigma, T d, int n, PdModel model) {
+  const T x = T(n) * d * d / varsigma;
+  const T e = dmath::dexp(-x);
+  if (model == PdModel::kPaper || n == 1) return e;
+  return e * (T(1) + x);  // n == 2
+}
+
+/// E_IG(a,b)[ln R^d(m; varsigma, n)] up to the per-measurement constant.
+/// kExact (spec 2.5 [fix]): -n (ln b - psi(a)) - n (m^2 - d^2) a / b.
+/// kPaper (P80/86/109): (2n-1) ln m - n m^2 a/b + n / (2 (a-2)), a > 2.
+template <class T>
+T expected_amplitude_loglik(T m, T d, T a, T b, int n, AmpLoglik model) {
+  const T tn = T(n);
+  if (model == AmpLoglik::kPaper) {
+    const T a_safe = a > T(2.001) ? a : T(2.001);  // the printed form diverges at a = 2
+    return (T(2) * tn - T(1)) * dmath::dlog(m) - tn * m * m * a / b +
+           tn / (T(2) * (a_safe - T(2)));
+  }
+  const T e_log = dmath::dlog(b) - dmath::ddigamma(a);  // E[ln varsigma], exact
+  return -tn * e_log - tn * (m * m - d * d) * a / b;
+}
+
+/// ln R^d(m; varsigma, n) for a known varsigma (known-clutter ablation),
+/// same dropped constant as expected_amplitude_loglik.
+template <class T>
+T amplitude_loglik(T m, T d, T varsigma, int n) {
+  const T tn = T(n);
+  return -tn * dmath::dlog(varsigma) - tn * (m * m - d * d) / varsigma;
+}
+
+}  // namespace mptrack::mfbp

@@ -1,0 +1,258 @@
+// Run-time parameters of the MF-BP tracker (seed 000, "MP-RMTT").
+//
+// Every default equals the paper's Sec. IV value (spec 4.5) or the spec's
+// [impl]/[fix] default (spec 7). The spec-7 switches are fields here so the
+// paper-literal behaviour can be restored for reproduction: pd_model (A15),
+// amp_loglik (A2), snr_update (A6), nw_forgetting (A9), clutter_rate_in_da
+// (A4), component_absent_evidence (A5), gate_chi2 (A29). Not implemented:
+// `smoother = paper` (A10; only the backward-statistics smoother exists)
+// and `meas_update = ekf` (A14; cubature only). Units are in the names or
+// the comments. validate() is what MfbpTracker::init() runs once; nothing
+// is re-checked per scan.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "mptrack/status.h"
+#include "mptrack/validate.h"
+
+namespace mptrack {
+
+/// Detection-probability model (spec 2.4, A15).
+enum class PdModel : std::uint8_t {
+  kExact,  ///< Pd = e^-x sum_{l<n} x^l/l!, x = n d^2/(1+snr) (Gamma(n) power), default
+  kPaper,  ///< (P9) Pd = exp(-n d^2/(1+snr)); identical for Swerling I
+};
+
+/// Expected amplitude log-likelihood used by the association (spec 2.5, A2).
+enum class AmpLoglik : std::uint8_t {
+  kExact,  ///< -n(ln b - psi(a)) - n(m^2-d^2) a/b, default
+  kPaper,  ///< (P80/86/109) (2n-1)ln m - n m^2 a/b + n/(2(a-2)); needs a > 2
+};
+
+/// Target SNR inverse-Gamma update (spec 3.9, A6).
+enum class SnrUpdate : std::uint8_t {
+  kMf,     ///< a += n w, b += n sum a_ij (m^2-d^2), default
+  kPaper,  ///< (P48) a += n, b += n sum a_ij (m^2-d^2)/w (guarded by w > w_min)
+};
+
+/// Wishart forgetting between scans (spec 2.8, A9).
+enum class NwForgetting : std::uint8_t {
+  kMeanPreserving,  ///< W <- W / xi_W (covariance-like W^-1 <- xi_W W^-1), default
+  kPaper,           ///< W <- xi_W W (literal; diverges over long runs)
+};
+
+/// Clutter model used by the association (spec 5.2 ablations).
+enum class ClutterMode : std::uint8_t {
+  kEstimate,          ///< uniform + estimated Gaussian components (MP-RMTT), default
+  kUniformKnownRate,  ///< uniform only, known rate uniform_rate_per_scan (MP-RMTT-NCE)
+  kKnown,             ///< clutter map given exactly in known_clutter (MP-RMTT-KCE)
+};
+
+/// One known non-uniform clutter component (measurement space), for kKnown.
+template <class T>
+struct KnownClutterComponent {
+  T rate_per_scan = T(0);                                        ///< expected count per scan [-]
+  Eigen::Matrix<T, 2, 1> mean = Eigen::Matrix<T, 2, 1>::Zero();  ///< [range m, azimuth rad]
+  Eigen::Matrix<T, 2, 2> covariance = Eigen::Matrix<T, 2, 2>::Identity();  ///< [m^2, m rad; ., rad^2]
+  T cnr = T(1);                                                  ///< mean CNR, linear [-]
+};
+
+/// The clutter map for ClutterMode::kKnown (Table III; rates may be updated
+/// between scans with MfbpTracker::set_known_clutter()).
+/// Known components a Params struct can describe (independent of Caps so
+/// that MfbpParams<T> is one type for every caps preset; the tracker uses
+/// the first min(num_components, Caps::kMaxClutterComponents)).
+constexpr std::size_t kMaxKnownClutterComponents = 8;
+
+template <class T>
+struct KnownClutter {
+  T uniform_rate_per_scan = T(30);  ///< expected uniform clutter count per scan [-]
+  T uniform_cnr = T(1);             ///< uniform CNR, linear (spec A17: sigma_0 = 1) [-]
+  std::size_t num_components = 0;   ///< used entries of components (<= kMaxKnownClutterComponents)
+  KnownClutterComponent<T> components[kMaxKnownClutterComponents];
+};
+
+/// All tunables of MfbpTracker. Defaults: seed000 paper values (spec 4.5)
+/// with the spec's recommended fixes (spec 7).
+template <class T>
+struct MfbpParams {
+  // --- surveillance region (spec 4.1, A20) ---
+  T r_min_m = T(10000);               ///< min range [m]
+  T r_max_m = T(50000);               ///< max range [m]
+  T az_min_rad = T(0.17453292519943295);  ///< min azimuth [rad] (10 deg)
+  T az_max_rad = T(1.0471975511965976);   ///< max azimuth [rad] (60 deg)
+
+  // --- kinematics (spec 2.1, 2.6) ---
+  T scan_period_s = T(1.25);          ///< nominal T [s]; only used for birth gates and the
+                                      ///< first prediction; dt comes from the timestamps
+  T process_noise_var = T(0.01);      ///< sigma_v^2 [(m/s^2)^2] (white-acceleration CV model)
+  T sigma_r_m = T(20);                ///< range noise std [m]
+  T sigma_az_rad = T(0.010471975511965976);  ///< azimuth noise std [rad] (0.6 deg)
+  T gate_chi2 = T(30);                ///< target gate on e^T (S+R)^-1 e (spec A29, 2 dof) [-]
+  T clutter_gate_chi2 = T(30);        ///< component gate under E[D] (spec 3.3 optional) [-]
+
+  // --- Doppler (not in the paper [impl]; used only for scans with has_doppler) ---
+  bool use_doppler = true;            ///< add radial velocity to likelihood and update when present
+  T sigma_doppler_mps = T(1);         ///< radial-velocity noise std [m/s]
+  T doppler_span_mps = T(150);        ///< clutter Doppler uniform on [-span, span] [m/s];
+                                      ///< |doppler| > span is rejected as invalid
+
+  // --- amplitude (spec 2.4, 2.5) ---
+  T amplitude_threshold = T(0.715);   ///< d: detector threshold on the normalised envelope [-]
+  int swerling = 1;                   ///< 1 (n = 1) or 3 (n = 2)
+  bool use_amplitude = true;          ///< false: kinematics only (MP-RMTT-KI)
+  T pd_no_amplitude = T(0.9);         ///< Pd(s=1) used when use_amplitude == false [-] [impl]
+  PdModel pd_model = PdModel::kExact;
+  AmpLoglik amp_loglik = AmpLoglik::kExact;
+  SnrUpdate snr_update = SnrUpdate::kMf;  ///< with kPaper the SNR IG is not smoothed backward
+
+  // --- SNR / CNR inverse-Gamma (spec 2.2, 2.9, A16) ---
+  T forgetting_target = T(1.05);      ///< u^t [-]
+  T forgetting_clutter = T(1.05);     ///< u^c [-]
+  T ig_birth_shape = T(3);            ///< a at track / component birth [-]
+  T ig_birth_scale_factor = T(2);     ///< b = factor * mean(m^2 - d^2) at birth [-]
+
+  // --- visibility Markov chain (spec 2.3, 2.4) ---
+  T p_survive = T(0.8);               ///< p_s = P(s_k=1 | s_k-1=1) [-]
+  T p_birth = T(0.15);                ///< p_b = P(s_k=1 | s_k-1=0) [-]
+  T pd_invisible = T(0.01);           ///< epsilon = Pd(s=0) [-]
+  T visibility_at_birth = T(0.5);     ///< f_s [-]
+
+  // --- window and iterations (spec 3.0, 3.11) ---
+  std::size_t window_length = 7;      ///< K scans (<= Caps::kMaxWindow); 1 = online filter
+  std::size_t slide = 3;              ///< s scans finalised per window (1 <= s <= K)
+  std::size_t mp_max_iterations = 3;  ///< r_max^MP (1 = MP-RMTTst, first iteration only)
+  T mp_tolerance = T(1e-3);           ///< delta^MP on max |delta a_hat| [-]
+  std::size_t bp_max_iterations = 200;  ///< r_max^BP (paper 1000; spec 3.11 caps at 200)
+  T bp_tolerance = T(1e-6);           ///< delta^BP on max |delta eta| [-]
+  T bp_damping = T(0.9);              ///< gamma: eta <- gamma eta_old + (1-gamma) eta_new [-]
+  T w_min = T(1e-6);                  ///< skip pseudo-measurement updates below this weight (A8) [-]
+
+  // --- clutter (spec 2.7, 2.8, 3.6, 3.8) ---
+  ClutterMode clutter_mode = ClutterMode::kEstimate;
+  bool clutter_rate_in_da = true;     ///< multiply clutter evidence by lambda_hat (A4)
+  T uniform_rate_per_scan = T(30);    ///< known uniform clutter rate for kUniformKnownRate [-]
+  T nw_forgetting_factor = T(0.99);   ///< xi_W [-]
+  NwForgetting nw_forgetting = NwForgetting::kMeanPreserving;
+  T dirichlet_kappa = T(5);           ///< kappa [-]
+  T component_absent_evidence = T(1); ///< theta^c_{tau,0} for tau >= 1 (A5); 0 disables E^c
+  T uniform_cnr_prior = T(1);         ///< prior mean CNR of the uniform component, linear [-]
+  T uniform_cnr_prior_shape = T(3);   ///< IG shape of that prior [-]
+  KnownClutter<T> known_clutter{};  ///< used by kKnown only
+
+  // --- track management (spec 2.9, 3.10) ---
+  T v_max_x_mps = T(120);             ///< two-point birth gate |dx| <= delta T v_max_x [m/s]
+  T v_max_y_mps = T(120);             ///< two-point birth gate [m/s]
+  std::size_t birth_max_lag = 3;      ///< L_max: scans between the two birth points (<= 3)
+  std::size_t birth_max_per_window = 20;  ///< N_birth,max, ranked by amplitude sum
+  bool late_birth = false;            ///< [impl] second birth pass after the MP loop, using the
+                                      ///< association beliefs of new scans (see mfbp_tracker.h)
+  T unexplained_threshold = T(0.2);   ///< measurement "unexplained" if sum_i a_ij below [-]
+  T birth_max_component_share = T(1);  ///< [impl] no birth from a measurement that Gaussian
+                                       ///< clutter components explain with at least this
+                                       ///< probability; 1 (default) = spec 3.10. Lower values
+                                       ///< save time in chaff but also block targets there.
+  T confirm_threshold = T(0.75);      ///< confirm when b_s(1) >= this at any window scan [-]
+  T delete_threshold = T(0.5);        ///< delete after delete_run scans with b_s(1) below [-]
+  std::size_t delete_run = 3;         ///< consecutive low-visibility scans before deletion
+  std::size_t tentative_timeout_scans = 6;  ///< tentative tracks older than this are dropped
+                                            ///< (spec: 2 windows = 2 s = 6 scans)
+  T report_existence_min = T(0.5);    ///< report confirmed tracks with b_s(1) >= this [-]
+
+  // --- clutter component birth / death (spec 3.10, [impl]) ---
+  bool clutter_birth = true;          ///< grid-seeded birth of Gaussian components
+  T clutter_cell_range_m = T(2000);   ///< birth grid cell size in range [m]
+  T clutter_cell_az_rad = T(0.06981317007977318);  ///< birth grid cell size in azimuth [rad] (4 deg)
+  T clutter_seed_factor = T(10);      ///< seed if count >= max(2 n_scans, factor * mu_cell)
+  T clutter_death_count = T(2);       ///< component dies if M_tau < this per scan ... [-]
+  std::size_t clutter_death_windows = 2;  ///< ... on all finalised scans of this many windows
+};
+
+/// The paper's Sec. IV configuration (spec 4.5) with the spec's fixes:
+/// the "mfbp" tracker (window 7, slide 3). Adjust window_length/slide,
+/// use_amplitude, clutter_mode or mp_max_iterations for the ablations.
+template <class T>
+MfbpParams<T> seed000_default_params() {
+  return MfbpParams<T>{};
+}
+
+/// Checks every documented constraint; kInvalidArgument on the first failure.
+template <class T>
+Status validate(const MfbpParams<T>& p, std::size_t max_window) {
+  MPTRACK_TRY(check_positive(p.r_min_m));
+  MPTRACK_TRY(check(is_finite(p.r_max_m) && p.r_max_m > p.r_min_m));
+  MPTRACK_TRY(check_range(p.az_min_rad, T(-3.141592653589793), T(3.141592653589793)));
+  MPTRACK_TRY(check(is_finite(p.az_max_rad) && p.az_max_rad > p.az_min_rad &&
+                    p.az_max_rad - p.az_min_rad <= T(6.283185307179586)));
+  MPTRACK_TRY(check_positive(p.scan_period_s));
+  MPTRACK_TRY(check_positive(p.process_noise_var));
+  MPTRACK_TRY(check_positive(p.sigma_r_m));
+  MPTRACK_TRY(check_positive(p.sigma_az_rad));
+  MPTRACK_TRY(check_positive(p.gate_chi2));
+  MPTRACK_TRY(check_positive(p.clutter_gate_chi2));
+  MPTRACK_TRY(check_positive(p.sigma_doppler_mps));
+  MPTRACK_TRY(check_positive(p.doppler_span_mps));
+  MPTRACK_TRY(check_positive(p.amplitude_threshold));
+  MPTRACK_TRY(check(p.swerling == 1 || p.swerling == 3));
+  MPTRACK_TRY(check_open_probability(p.pd_no_amplitude));
+  MPTRACK_TRY(check(is_finite(p.forgetting_target) && p.forgetting_target >= T(1)));
+  MPTRACK_TRY(check(is_finite(p.forgetting_clutter) && p.forgetting_clutter >= T(1)));
+  MPTRACK_TRY(check(is_finite(p.ig_birth_shape) && p.ig_birth_shape > T(2)));
+  MPTRACK_TRY(check_positive(p.ig_birth_scale_factor));
+  MPTRACK_TRY(check_open_probability(p.p_survive));
+  MPTRACK_TRY(check_open_probability(p.p_birth));
+  MPTRACK_TRY(check_open_probability(p.pd_invisible));
+  MPTRACK_TRY(check_open_probability(p.visibility_at_birth));
+  MPTRACK_TRY(check(p.window_length >= 1 && p.window_length <= max_window));
+  MPTRACK_TRY(check(p.slide >= 1 && p.slide <= p.window_length));
+  MPTRACK_TRY(check(p.mp_max_iterations >= 1 && p.mp_max_iterations <= 100));
+  MPTRACK_TRY(check_positive(p.mp_tolerance));
+  MPTRACK_TRY(check(p.bp_max_iterations >= 1 && p.bp_max_iterations <= 100000));
+  MPTRACK_TRY(check_positive(p.bp_tolerance));
+  MPTRACK_TRY(check(is_finite(p.bp_damping) && p.bp_damping >= T(0) && p.bp_damping < T(1)));
+  MPTRACK_TRY(check_positive(p.w_min));
+  MPTRACK_TRY(check_positive(p.uniform_rate_per_scan));
+  MPTRACK_TRY(check(is_finite(p.nw_forgetting_factor) && p.nw_forgetting_factor > T(0) &&
+                    !(p.nw_forgetting_factor > T(1))));
+  MPTRACK_TRY(check_positive(p.dirichlet_kappa));
+  MPTRACK_TRY(check(is_finite(p.component_absent_evidence) && !(p.component_absent_evidence < T(0))));
+  MPTRACK_TRY(check_positive(p.uniform_cnr_prior));
+  MPTRACK_TRY(check(is_finite(p.uniform_cnr_prior_shape) && p.uniform_cnr_prior_shape > T(1)));
+  MPTRACK_TRY(check_positive(p.v_max_x_mps));
+  MPTRACK_TRY(check_positive(p.v_max_y_mps));
+  MPTRACK_TRY(check(p.birth_max_lag >= 1 && p.birth_max_lag <= 3));
+  MPTRACK_TRY(check(p.birth_max_per_window >= 1));
+  MPTRACK_TRY(check_open_probability(p.unexplained_threshold));
+  MPTRACK_TRY(check_range(p.birth_max_component_share, T(0), T(1)));
+  MPTRACK_TRY(check_open_probability(p.confirm_threshold));
+  MPTRACK_TRY(check_open_probability(p.delete_threshold));
+  MPTRACK_TRY(check(p.delete_run >= 1));
+  MPTRACK_TRY(check(p.tentative_timeout_scans >= 1));
+  MPTRACK_TRY(check_range(p.report_existence_min, T(0), T(1)));
+  MPTRACK_TRY(check_positive(p.clutter_cell_range_m));
+  MPTRACK_TRY(check_positive(p.clutter_cell_az_rad));
+  MPTRACK_TRY(check_positive(p.clutter_seed_factor));
+  MPTRACK_TRY(check(is_finite(p.clutter_death_count) && !(p.clutter_death_count < T(0))));
+  MPTRACK_TRY(check(p.clutter_death_windows >= 1));
+  const auto& kc = p.known_clutter;
+  MPTRACK_TRY(check(kc.num_components <= kMaxKnownClutterComponents));
+  if (p.clutter_mode == ClutterMode::kKnown) {
+    MPTRACK_TRY(check_positive(kc.uniform_rate_per_scan));
+    MPTRACK_TRY(check(is_finite(kc.uniform_cnr) && !(kc.uniform_cnr < T(0))));
+    for (std::size_t c = 0; c < kc.num_components; ++c) {
+      const auto& comp = kc.components[c];
+      MPTRACK_TRY(check(is_finite(comp.rate_per_scan) && !(comp.rate_per_scan < T(0))));
+      MPTRACK_TRY(check(is_finite(comp.cnr) && !(comp.cnr < T(0))));
+      const T det = comp.covariance(0, 0) * comp.covariance(1, 1) -
+                    comp.covariance(0, 1) * comp.covariance(1, 0);
+      MPTRACK_TRY(check(is_finite(det) && det > T(0) && comp.covariance(0, 0) > T(0)));
+    }
+  }
+  return Status::kOk;
+}
+
+}  // namespace mptrack

@@ -1,0 +1,82 @@
+// Two-point track initiation (spec 2.9, 3.10; [paper], details [impl]).
+#pragma once
+
+#include "mptrack/mfbp/cubature.h"
+#include "mptrack/mfbp/inverse_gamma.h"
+
+namespace mptrack::mfbp {
+
+/// Cartesian position of polar y = (r, theta): p = r [cos theta, sin theta].
+template <class T>
+Vec2<T> cartesian_of_polar(T range_m, T az_rad) {
+  T s, c;
+  dmath::dsincos(az_rad, s, c);
+  return Vec2<T>(range_m * c, range_m * s);
+}
+
+/// Position covariance J R J^T of the polar->Cartesian map at (r, theta),
+/// J = [[cos, -r sin], [sin, r cos]], R = diag(sigma_r^2, sigma_az^2).
+template <class T>
+Mat2<T> cartesian_position_covariance(T range_m, T az_rad, T sigma_r, T sigma_az) {
+  T s, c;
+  dmath::dsincos(az_rad, s, c);
+  Mat2<T> J;
+  J << c, -range_m * s, s, range_m * c;
+  Mat2<T> R = Mat2<T>::Zero();
+  R(0, 0) = sigma_r * sigma_r;
+  R(1, 1) = sigma_az * sigma_az;
+  Mat2<T> P = J * R * J.transpose();
+  P(0, 1) = P(1, 0) = T(0.5) * (P(0, 1) + P(1, 0));
+  return P;
+}
+
+/// True if a measurement pair passes the v_max box gate (spec 2.9):
+/// |dx| <= dt v_max_x and |dy| <= dt v_max_y.
+template <class T>
+bool birth_gate(const Vec2<T>& p1, const Vec2<T>& p2, T dt_s, T v_max_x, T v_max_y) {
+  const T dx = p2(0) - p1(0);
+  const T dy = p2(1) - p1(1);
+  const T adx = dx < T(0) ? -dx : dx;
+  const T ady = dy < T(0) ? -dy : dy;
+  return adx <= dt_s * v_max_x && ady <= dt_s * v_max_y;
+}
+
+/// Initial state at the second point (spec 3.10): position p2, velocity
+/// (p2 - p1)/dt; P_pos = J R J^T at y2; velocity covariance
+/// (P_pos1 + P_pos2)/dt^2; position-velocity cross term P_pos2/dt.
+template <class T>
+void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, Vec4<T>& x,
+                     Mat4<T>& P) {
+  const Vec2<T> p1 = cartesian_of_polar(r1, az1);
+  const Vec2<T> p2 = cartesian_of_polar(r2, az2);
+  const Mat2<T> P1 = cartesian_position_covariance(r1, az1, sigma_r, sigma_az);
+  const Mat2<T> P2 = cartesian_position_covariance(r2, az2, sigma_r, sigma_az);
+  const Vec2<T> v = (p2 - p1) / dt_s;
+  x << p2(0), v(0), p2(1), v(1);
+  const Mat2<T> Pv = (P1 + P2) / (dt_s * dt_s);
+  const Mat2<T> Pc = P2 / dt_s;
+  // State order [px, vx, py, vy]: position rows/cols {0, 2}, velocity {1, 3}.
+  const int pos[2] = {0, 2};
+  const int vel[2] = {1, 3};
+  for (int a = 0; a < 2; ++a) {
+    for (int b = 0; b < 2; ++b) {
+      P(pos[a], pos[b]) = P2(a, b);
+      P(vel[a], vel[b]) = Pv(a, b);
+      P(pos[a], vel[b]) = Pc(a, b);
+      P(vel[a], pos[b]) = Pc(b, a);
+    }
+  }
+}
+
+/// IG at birth (spec 2.9 [fix], A16): a = shape, b = factor mean(m^2 - d^2).
+template <class T>
+InverseGamma<T> birth_snr_belief(T m1, T m2, T d, T shape, T factor) {
+  InverseGamma<T> ig;
+  ig.a = shape;
+  T mean_excess = T(0.5) * ((m1 * m1 - d * d) + (m2 * m2 - d * d));
+  if (!(mean_excess > T(1e-3))) mean_excess = T(1e-3);
+  ig.b = factor * mean_excess;
+  return ig;
+}
+
+}  // namespace mptrack::mfbp
