@@ -5,7 +5,15 @@
 // malloc or __cxa_throw reachable from core shows up as an undefined symbol
 // of this library.
 #include "mptrack/caps.h"
+#include "mptrack/cbmember/cbmember_filter.h"
+#include "mptrack/frontend/front_end.h"
+#include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/measurement.h"
+#include "mptrack/metrics/assignment.h"
+#include "mptrack/metrics/gospa.h"
+#include "mptrack/metrics/ospa.h"
+#include "mptrack/phd/phd_filter.h"
+#include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
@@ -14,6 +22,36 @@ namespace mptrack {
 
 template class StaticVector<Measurement<float>, DefaultCaps::kMaxMeasurements>;
 template class StaticVector<Measurement<double>, DefaultCaps::kMaxMeasurements>;
+
+// metrics + GNN baseline
+template class AssignmentSolver<float, DefaultCaps::kMaxTargets>;
+template class OspaMetric<float, DefaultCaps::kMaxTargets>;
+template class GospaMetric<float, DefaultCaps::kMaxTargets>;
+template class GnnTracker<float, DefaultCaps>;
+template class GnnTracker<float, SmallBoardCaps>;
+
+// MIMO front end (seed 004 and the large Doppler configuration), float and int16 cubes
+template class frontend::FrontEnd<frontend::Seed004RadarCaps>;
+template Status frontend::FrontEnd<frontend::Seed004RadarCaps>::process(
+    const frontend::RadarCube<frontend::Seed004RadarCaps>&,
+    Scan<float, frontend::Seed004RadarCaps::kMaxDetections>&, frontend::FrontEndStageTimes*);
+template Status frontend::FrontEnd<frontend::Seed004RadarCaps>::process(
+    const frontend::RadarCubeInt16<frontend::Seed004RadarCaps>&,
+    Scan<float, frontend::Seed004RadarCaps::kMaxDetections>&, frontend::FrontEndStageTimes*);
+template class frontend::FrontEnd<frontend::LargeRadarCaps>;
+template Status frontend::FrontEnd<frontend::LargeRadarCaps>::process(
+    const frontend::RadarCubeInt16<frontend::LargeRadarCaps>&,
+    Scan<float, frontend::LargeRadarCaps::kMaxDetections>&, frontend::FrontEndStageTimes*);
+
+// MF-BP tracker (seed 000): float on targets, double for the host harness
+template class MfbpTracker<float, DefaultCaps>;
+template class MfbpTracker<float, SmallBoardCaps>;
+template class MfbpTracker<double, DefaultCaps>;
+
+// IGGM baselines (seed 001): GM-PHD, GM-CPHD, CBMeMBer
+template class phd::PhdFilter<float, DefaultCaps, false>;
+template class phd::PhdFilter<float, DefaultCaps, true>;
+template class cbmember::CbMemberFilter<float, DefaultCaps>;
 
 static_assert(caps_are_valid<DefaultCaps>());
 static_assert(caps_are_valid<SmallBoardCaps>());

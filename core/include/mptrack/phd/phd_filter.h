@@ -1,0 +1,366 @@
+// GM-PHD and GM-CPHD filters with amplitude information (IGGM, seed 001
+// spec 5.1-5.3), in fixed memory. The two share everything except the
+// weight factors of the update, selected by the Cardinalized parameter:
+//   GmPhdFilter<T, Caps>  = PhdFilter<T, Caps, false>   (spec 5.2, P66-P72)
+//   GmCphdFilter<T, Caps> = PhdFilter<T, Caps, true>    (Vo, Vo, Cantoni 2007)
+//
+// Per scan (step):
+//   predict   w *= p_S, CV kinematics, power forgetting (spec 1.3); births
+//             seeded by the previous scan's measurements (filter_common.h);
+//             clutter statistics forgotten (clutter_estimator.h)
+//   update    PHD:  missed w (1 - P_D); detected w q(z) / (kappa(z) + sum w q(z))
+//             CPHD: the same terms scaled by the cardinality ratios of
+//                   cardinality.h, and p(n) updated
+//             with q = P_D N(z; z_hat, S) K_RL(a) (K_RL = 1 without amplitude);
+//             clutter statistics updated with P(z is clutter)
+//   reduce    prune / merge / cap (mixture.h), policy and counters there
+//   extract   PHD: components with w > extract_threshold;
+//             CPHD: the MAP cardinality's heaviest components.
+// The clutter model is the same object for the three filters (mode chosen
+// by FilterParams::clutter_mode).
+//
+// Caps: kMaxComponents = 2 kMaxTargets after reduction; the update works in
+// a buffer of kMaxWork components. Overflow policy there: when it is full a
+// new component replaces the lightest one if it is heavier (else it is
+// dropped); both are counted in counters().track_cap_hits.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "mptrack/caps.h"
+#include "mptrack/measurement.h"
+#include "mptrack/phd/cardinality.h"
+#include "mptrack/phd/clutter_estimator.h"
+#include "mptrack/phd/filter_common.h"
+#include "mptrack/phd/mixture.h"
+#include "mptrack/phd/phd_params.h"
+#include "mptrack/static_vector.h"
+#include "mptrack/status.h"
+#include "mptrack/track_report.h"
+
+namespace mptrack::phd {
+
+template <class T, class Caps, bool Cardinalized>
+class PhdFilter {
+  static_assert(caps_are_valid<Caps>(), "invalid caps");
+
+ public:
+  using Scalar = T;
+  using Params = FilterParams<T>;
+  using ScanType = Scan<T, Caps::kMaxMeasurements>;
+  using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
+  using OutputQueue = StaticVector<Estimate, 1>;
+  using Component = TargetComponent<T>;
+
+  static constexpr std::size_t kMaxMeasurements = Caps::kMaxMeasurements;
+  static constexpr std::size_t kMaxComponents = 2 * Caps::kMaxTargets;
+  static constexpr std::size_t kMaxPredicted = kMaxComponents + Caps::kMaxMeasurements;
+  static constexpr std::size_t kMaxWork = 2 * kMaxPredicted;
+  static constexpr std::size_t kMaxCardinality = Caps::kMaxTargets;
+
+  /// Validates p and resets everything.
+  Status init(const Params& p) {
+    initialized_ = false;
+    MPTRACK_TRY(p.validate());
+    params_ = p;
+    model_ = p.measurement_model();
+    gate_ = chi2_gate_2dof(p.gate_probability);
+    MPTRACK_TRY(clutter_.init(p));
+    reduction_.prune_threshold = p.prune_threshold;
+    reduction_.merge_threshold = p.merge_threshold;
+    reduction_.merge_threshold_power = p.merge_threshold_power;
+    reduction_.use_power = p.use_amplitude;
+    reduction_.max_alpha = p.max_alpha;
+    components_.clear();
+    births_.clear();
+    outputs_.clear();
+    counters_ = TrackerCounters{};
+    cardinality_.init();
+    next_label_ = 1;
+    scan_index_ = 0;
+    have_time_ = false;
+    initialized_ = true;
+    return Status::kOk;
+  }
+
+  /// Predict + update with one scan. kPartial if some measurements were
+  /// rejected (counted); kCapacityExceeded if a mixture cap dropped mass.
+  Status step(const ScanType& scan) {
+    outputs_.clear();
+    if (!initialized_) {
+      ++counters_.scans_rejected;
+      return Status::kNotInitialized;
+    }
+    if (have_time_ && scan.time_us <= last_time_us_) {
+      ++counters_.scans_rejected;
+      return Status::kOutOfOrder;
+    }
+    const T dt = have_time_ ? T(scan.time_us - last_time_us_) * T(1e-6) : params_.scan_period_s;
+    last_time_us_ = scan.time_us;
+    have_time_ = true;
+    ++counters_.scans;
+    counters_.measurements_in += scan.measurements.size();
+    batch_.load(scan, params_, model_);
+    counters_.measurements_invalid += batch_.invalid;
+    const std::uint64_t cap_before = counters_.track_cap_hits;
+
+    predict(dt);
+    clutter_.evaluate(batch_.z.data(), batch_.amp.data(), batch_.valid.data(), batch_.n);
+    update();
+    clutter_.update(batch_.z.data(), batch_.amp.data(), batch_.valid.data(), clutter_prob_.data());
+    counters_.clutter_born = clutter_.born();
+    counters_.clutter_deleted = clutter_.deleted();
+    counters_.clutter_cap_hits = clutter_.cap_hits();
+    counters_.track_cap_hits +=
+        reduce_mixture(work_, components_, reduction_, scratch_, counters_.numerical_repairs);
+    make_births();
+    extract(scan.time_us);
+    ++scan_index_;
+    if (counters_.track_cap_hits != cap_before) return Status::kCapacityExceeded;
+    return batch_.invalid > 0 ? Status::kPartial : Status::kOk;
+  }
+
+  /// Online filter: nothing is held back.
+  Status flush() {
+    outputs_.clear();
+    return initialized_ ? Status::kOk : Status::kNotInitialized;
+  }
+
+  const OutputQueue& outputs() const { return outputs_; }
+  const TrackerCounters& counters() const { return counters_; }
+  const StaticVector<Component, kMaxComponents>& components() const { return components_; }
+  /// Expected number of targets: sum of weights (PHD) or mean cardinality (CPHD).
+  T expected_targets() const {
+    if (Cardinalized) return cardinality_.mean();
+    T s = T(0);
+    for (const Component& c : components_) s += c.weight;
+    return s;
+  }
+  const Cardinality<T, kMaxCardinality>& cardinality() const { return cardinality_; }
+  const ClutterEstimator<T, kMaxMeasurements, Caps::kMaxClutterComponents>& clutter() const {
+    return clutter_;
+  }
+
+ private:
+  void predict(T dt) {
+    predicted_.clear();
+    T birth_mass = T(0);
+    for (const Component& c : components_) {
+      Component p = c;
+      p.weight *= params_.survival_prob;
+      predict_component(p, params_, dt);
+      (void)predicted_.push_back(p);  // kMaxComponents <= kMaxPredicted
+    }
+    for (const Component& b : births_) {
+      Component p = b;
+      predict_component(p, params_, dt);
+      birth_mass += p.weight;
+      if (predicted_.push_back(p) != Status::kOk) ++counters_.track_cap_hits;
+    }
+    births_.clear();
+    if (Cardinalized) cardinality_.predict(params_.survival_prob, birth_mass);
+    clutter_.predict();
+  }
+
+  void push_work(const Component& c) {
+    if (!(c.weight >= params_.prune_threshold)) return;
+    if (work_.push_back(c) == Status::kOk) return;
+    ++counters_.track_cap_hits;
+    std::size_t lightest = 0;
+    for (std::size_t k = 1; k < work_.size(); ++k) {
+      if (work_[k].weight < work_[lightest].weight) lightest = k;
+    }
+    if (c.weight > work_[lightest].weight) work_[lightest] = c;
+  }
+
+  void update() {
+    const std::size_t J = predicted_.size();
+    const std::size_t M = batch_.n;
+    T W = T(0);
+    T missed = T(0);
+    for (std::size_t j = 0; j < J; ++j) {
+      if (linearize_component(predicted_[j], model_, params_, lin_[j])) ++counters_.numerical_repairs;
+      W += predicted_[j].weight;
+      missed += predicted_[j].weight * (T(1) - lin_[j].pd);
+    }
+    // Pass 1: ln sum_j w_j q_ij per measurement (ln 0 if nothing gated).
+    for (std::size_t i = 0; i < M; ++i) {
+      log_target_sum_[i] = Cardinality<T, kMaxCardinality>::kLogZero;
+      if (!batch_.valid[i]) continue;
+      LogSum<T> s;
+      Vec2<T> v;
+      T lq = T(0);
+      for (std::size_t j = 0; j < J; ++j) {
+        if (!(predicted_[j].weight > T(0))) continue;
+        if (!log_detection_likelihood(predicted_[j], lin_[j], batch_, i, model_, params_, gate_, v, lq)) continue;
+        s.add(dmath::dlog(predicted_[j].weight) + lq);
+      }
+      if (s.any) log_target_sum_[i] = s.value();
+    }
+
+    // Weight factors: ln of the missed-detection factor and of the
+    // detected factor per measurement (the latter includes 1/denominator).
+    T log_missed_factor = T(0);
+    if (!Cardinalized || !(W > T(0))) {
+      for (std::size_t i = 0; i < M; ++i) {
+        if (!batch_.valid[i]) continue;
+        log_detect_factor_[i] = -log_add(clutter_.log_intensity(i), log_target_sum_[i]);
+      }
+    } else {
+      cphd_factors(W, missed, log_missed_factor);
+    }
+
+    // Pass 2: build the updated mixture.
+    work_.clear();
+    for (std::size_t j = 0; j < J; ++j) {
+      Component c = predicted_[j];
+      c.weight = predicted_[j].weight * (T(1) - lin_[j].pd) * dmath::dexp(log_missed_factor);
+      push_work(c);
+    }
+    for (std::size_t i = 0; i < M; ++i) {
+      target_prob_[i] = T(0);
+      clutter_prob_[i] = T(0);
+      if (!batch_.valid[i]) continue;
+      if (log_target_sum_[i] > Cardinality<T, kMaxCardinality>::kLogZero) {
+        Vec2<T> v;
+        T lq = T(0);
+        for (std::size_t j = 0; j < J; ++j) {
+          if (!(predicted_[j].weight > T(0))) continue;
+          if (!log_detection_likelihood(predicted_[j], lin_[j], batch_, i, model_, params_, gate_, v, lq)) continue;
+          Component u = updated_component(predicted_[j], lin_[j], batch_, i, v, params_);
+          u.weight = dmath::dexp(dmath::dlog(predicted_[j].weight) + lq + log_detect_factor_[i]);
+          target_prob_[i] += u.weight;
+          push_work(u);
+        }
+      }
+      const T pt = target_prob_[i] < T(1) ? target_prob_[i] : T(1);
+      clutter_prob_[i] = T(1) - pt;
+    }
+  }
+
+  // CPHD factors (cardinality.h): ln of the missed factor, and per
+  // measurement ln(<A^1(Z\z),p> / (W <A^0(Z),p>)) - ln kappa(z).
+  void cphd_factors(T W, T missed, T& log_missed_factor) {
+    const T log_w = dmath::dlog(W);
+    const T phi = clamp_probability(missed / W);
+    const T log_phi = dmath::dlog(phi);
+    // R'_z over the measurements with a gated component.
+    std::size_t active = 0;
+    for (std::size_t i = 0; i < batch_.n; ++i) {
+      if (!batch_.valid[i] || !(log_target_sum_[i] > Cardinality<T, kMaxCardinality>::kLogZero)) continue;
+      active_index_[active] = i;
+      log_ratio_[active] = log_target_sum_[i] - clutter_.log_intensity(i) - log_w;
+      ++active;
+    }
+    const std::size_t none = active;  // skip index that matches nothing
+    std::size_t top = cardinality_.esf(log_ratio_.data(), active, none, esf_);
+    cardinality_.log_a(esf_, top, 0, log_phi, la0_);
+    cardinality_.log_a(esf_, top, 1, log_phi, la1_);
+    const T l0 = cardinality_.log_inner(la0_);
+    const T l1 = cardinality_.log_inner(la1_);
+    log_missed_factor = l1 - l0 - log_w;
+    for (std::size_t a = 0; a < active; ++a) {
+      top = cardinality_.esf(log_ratio_.data(), active, a, esf_loo_);
+      cardinality_.log_a(esf_loo_, top, 1, log_phi, la_loo_);
+      const std::size_t i = active_index_[a];
+      log_detect_factor_[i] = cardinality_.log_inner(la_loo_) - l0 - log_w - clutter_.log_intensity(i);
+    }
+    cardinality_.update(la0_, l0);
+  }
+
+  void make_births() {
+    births_.clear();
+    T denom = T(0);
+    for (std::size_t i = 0; i < batch_.n; ++i) {
+      if (batch_.valid[i]) denom += clutter_prob_[i];
+    }
+    if (!(denom > T(0))) return;
+    for (std::size_t i = 0; i < batch_.n; ++i) {
+      if (!batch_.valid[i]) continue;
+      const T w = params_.birth_rate * clutter_prob_[i] / denom;
+      if (!(w >= params_.prune_threshold)) continue;
+      if (births_.push_back(birth_component(batch_.z[i], w, next_label_, model_, params_)) != Status::kOk) {
+        ++counters_.track_cap_hits;
+        continue;
+      }
+      ++next_label_;
+      ++counters_.tracks_born;
+    }
+  }
+
+  void extract(std::uint64_t time_us) {
+    (void)outputs_.resize(1);
+    Estimate& e = outputs_[0];
+    e.time_us = time_us;
+    e.scan_index = scan_index_;
+    e.tracks.clear();
+    e.clutter.clear();
+    // A component of weight w stands for round(w) targets (closely spaced
+    // targets merge into one component): it is reported that many times,
+    // copy k with id label + k * 2^24. CPHD: components heaviest first until
+    // the MAP cardinality is reached; PHD: every copy with w > extract_threshold.
+    const std::size_t n = components_.size();
+    const std::size_t want = Cardinalized ? cardinality_.map() : Caps::kMaxTargets;
+    std::size_t reported = 0;
+    for (std::size_t k = 0; k < n && reported < want; ++k) {
+      const T w = components_[k].weight;
+      std::size_t copies = static_cast<std::size_t>(w + T(0.5));
+      if (!Cardinalized && copies == 0 && w > params_.extract_threshold) copies = 1;
+      if (Cardinalized && copies == 0) copies = 1;
+      for (std::size_t c = 0; c < copies && reported < want; ++c, ++reported) {
+        if (add_track(e, components_[k], static_cast<std::uint32_t>(c)) != Status::kOk) break;
+      }
+    }
+    clutter_.report(e.clutter);
+  }
+
+  Status add_track(Estimate& e, const Component& c, std::uint32_t copy) {
+    TrackReport<T> r;
+    r.id = c.label + (copy << 24);
+    r.state = c.x;
+    r.covariance = c.P;
+    r.existence = c.weight < T(1) ? c.weight : T(1);
+    r.snr = params_.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
+    r.confirmed = true;
+    r.measurement_index = c.measurement;
+    return e.tracks.push_back(r);
+  }
+
+  Params params_;
+  MeasurementModel<T> model_;
+  ReductionSettings<T> reduction_;
+  T gate_ = T(0);
+  bool initialized_ = false;
+  bool have_time_ = false;
+  std::uint64_t last_time_us_ = 0;
+  std::uint32_t scan_index_ = 0;
+  std::uint32_t next_label_ = 1;
+  TrackerCounters counters_;
+
+  StaticVector<Component, kMaxComponents> components_;
+  StaticVector<Component, Caps::kMaxMeasurements> births_;
+  StaticVector<Component, kMaxPredicted> predicted_;
+  StaticVector<Component, kMaxWork> work_;
+  ReductionScratch<kMaxWork> scratch_;
+  std::array<Linearized<T>, kMaxPredicted> lin_{};
+  MeasurementBatch<T, Caps::kMaxMeasurements> batch_;
+  std::array<T, Caps::kMaxMeasurements> log_target_sum_{};
+  std::array<T, Caps::kMaxMeasurements> log_detect_factor_{};
+  std::array<T, Caps::kMaxMeasurements> target_prob_{};
+  std::array<T, Caps::kMaxMeasurements> clutter_prob_{};
+  std::array<T, Caps::kMaxMeasurements> log_ratio_{};
+  std::array<std::size_t, Caps::kMaxMeasurements> active_index_{};
+  std::array<T, kMaxCardinality + 1> esf_{}, esf_loo_{}, la0_{}, la1_{}, la_loo_{};
+  Cardinality<T, kMaxCardinality> cardinality_;
+  ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents> clutter_;
+  OutputQueue outputs_;
+};
+
+template <class T, class Caps = DefaultCaps>
+using GmPhdFilter = PhdFilter<T, Caps, false>;
+template <class T, class Caps = DefaultCaps>
+using GmCphdFilter = PhdFilter<T, Caps, true>;
+
+}  // namespace mptrack::phd

@@ -1,0 +1,63 @@
+// Bit-exact record of GM-PHD and GM-CPHD (double and float) over 15 scans
+// of the phd_test_scenario.h data: extracted states, weights, SNRs, the
+// clutter rate and cardinality. Same bits on x86-64, aarch64 and armhf.
+#include <doctest/doctest.h>
+
+#include <memory>
+#include <string>
+
+#include "golden.h"
+#include "mptrack/phd/phd_filter.h"
+#include "../unit/phd_test_scenario.h"
+
+using namespace mptrack;
+
+namespace {
+
+const phdtest::Truth kTruth[2] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0, 10.0}};
+
+template <class T, class Filter>
+void record(test::GoldenFile& g, const std::string& tag, phd::ClutterMode mode) {
+  auto f = std::make_unique<Filter>();
+  phd::FilterParams<T> p;
+  p.threshold = T(phdtest::kThreshold);
+  p.clutter_mode = mode;
+  REQUIRE(f->init(p) == Status::kOk);
+  auto scan_d = std::make_unique<Scan<double, DefaultCaps::kMaxMeasurements>>();
+  auto scan = std::make_unique<Scan<T, DefaultCaps::kMaxMeasurements>>();
+  for (int k = 0; k < 15; ++k) {
+    phdtest::make_scan(*scan_d, k, kTruth, 2, 40, 21);
+    scan->time_us = scan_d->time_us;
+    scan->measurements.clear();
+    for (const auto& m : scan_d->measurements) {
+      Measurement<T> y;
+      y.range_m = T(m.range_m);
+      y.azimuth_rad = T(m.azimuth_rad);
+      y.amplitude = T(m.amplitude);
+      (void)scan->measurements.push_back(y);
+    }
+    (void)f->step(*scan);
+    const std::string s = tag + ".k" + std::to_string(k);
+    g.add(s + ".expected", f->expected_targets());
+    g.add(s + ".clutter_rate", f->clutter().total_rate());
+    for (const auto& t : f->outputs()[0].tracks) {
+      const std::string id = s + ".t" + std::to_string(t.id);
+      g.add(id + ".px", t.state(0));
+      g.add(id + ".vy", t.state(3));
+      g.add(id + ".w", t.existence);
+      g.add(id + ".snr", t.snr);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("GM-PHD and GM-CPHD golden record") {
+  test::GoldenFile g("phd_filters");
+  record<double, phd::GmPhdFilter<double>>(g, "phd.d.est", phd::ClutterMode::kEstimatedUniform);
+  record<double, phd::GmCphdFilter<double>>(g, "cphd.d.map", phd::ClutterMode::kEstimatedMap);
+  record<float, phd::GmPhdFilter<float>>(g, "phd.f.known", phd::ClutterMode::kKnownUniform);
+  record<float, phd::GmCphdFilter<float>>(g, "cphd.f.est", phd::ClutterMode::kEstimatedUniform);
+  CHECK(g.size() > 100);
+  CHECK(g.matches());
+}
