@@ -1,0 +1,148 @@
+// ScenarioSpec validation and equality.
+#include "mptrack/scenario/scenario_spec.h"
+
+#include <string>
+
+#include "mptrack/validate.h"
+
+namespace mptrack::scenario {
+
+namespace {
+
+bool finite(double x) { return is_finite(x); }
+bool positive(double x) { return finite(x) && x > 0.0; }
+bool non_negative(double x) { return finite(x) && x >= 0.0; }
+
+std::string at(const char* list, std::size_t i, const char* field) {
+  return std::string(list) + "[" + std::to_string(i) + "]." + field;
+}
+
+std::string check_lifetime(const std::string& where, std::uint32_t birth, std::uint32_t death,
+                           std::uint32_t num_scans) {
+  if (birth < 1 || birth > death || death > num_scans) {
+    return where + ": expected [birth, death] with 1 <= birth <= death <= scans (" +
+           std::to_string(num_scans) + ")";
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string validate(const ScenarioSpec& s) {
+  if (s.num_scans < 1) return "scans: expected a positive integer";
+  if (!positive(s.scan_period_s)) return "scan_period_s: expected a positive number";
+  const Region& r = s.region;
+  if (!non_negative(r.range_min_m) || !finite(r.range_max_m) || !(r.range_max_m > r.range_min_m)) {
+    return "region.range_m: expected [min, max] with 0 <= min < max";
+  }
+  if (!finite(r.azimuth_min_deg) || !finite(r.azimuth_max_deg) ||
+      !(r.azimuth_max_deg > r.azimuth_min_deg) || r.azimuth_min_deg < -180.0 ||
+      r.azimuth_max_deg > 180.0) {
+    return "region.azimuth_deg: expected [min, max] with -180 <= min < max <= 180";
+  }
+  if (!positive(s.sigma_range_m)) return "measurement_noise.sigma_range_m: expected a positive number";
+  if (!positive(s.sigma_azimuth_deg)) {
+    return "measurement_noise.sigma_azimuth_deg: expected a positive number";
+  }
+  if (!positive(s.threshold)) return "threshold: expected a positive number";
+  if (s.eval_first_scan < 1 || s.eval_first_scan > s.eval_last_scan || s.eval_last_scan > s.num_scans) {
+    return "evaluation: expected 1 <= first_scan <= last_scan <= scans";
+  }
+  for (std::size_t i = 0; i < s.targets.size(); ++i) {
+    const TargetSpec& t = s.targets[i];
+    if (t.id < 1) return at("targets", i, "id") + ": expected a positive integer";
+    for (std::size_t j = 0; j < i; ++j) {
+      if (s.targets[j].id == t.id) return at("targets", i, "id") + ": duplicate id " + std::to_string(t.id);
+    }
+    for (double v : t.initial_state) {
+      if (!finite(v)) return at("targets", i, "initial_state") + ": expected 4 finite numbers";
+    }
+    std::string e = check_lifetime(at("targets", i, "lifetime"), t.birth_scan, t.death_scan, s.num_scans);
+    if (!e.empty()) return e;
+    if (!positive(t.snr)) return at("targets", i, "snr") + ": expected a positive number";
+    double last_start = -1e300;
+    for (std::size_t j = 0; j < t.motion.size(); ++j) {
+      const MotionSegment& m = t.motion[j];
+      const std::string w = at("targets", i, "motion") + "[" + std::to_string(j) + "]";
+      if (!finite(m.start_s) || m.start_s < last_start) {
+        return w + ".start_s: expected a finite time, not before the previous segment";
+      }
+      last_start = m.start_s;
+      if (!finite(m.accel_mps2[0]) || !finite(m.accel_mps2[1])) return w + ".accel_mps2: expected 2 finite numbers";
+      if (!finite(m.turn_rate_deg_s)) return w + ".turn_rate_deg_s: expected a finite number";
+      if (!finite(m.velocity_mps[0]) || !finite(m.velocity_mps[1])) {
+        return w + ".velocity_mps: expected 2 finite numbers";
+      }
+    }
+  }
+  for (std::size_t i = 0; i < s.clutter.size(); ++i) {
+    const ClutterSpec& c = s.clutter[i];
+    for (std::size_t j = 0; j < i; ++j) {
+      if (s.clutter[j].id == c.id) return at("clutter", i, "id") + ": duplicate id " + std::to_string(c.id);
+    }
+    if (!non_negative(c.mean_count)) return at("clutter", i, "mean_count") + ": expected a non-negative number";
+    if (!positive(c.cnr)) return at("clutter", i, "cnr") + ": expected a positive number";
+    std::string e = check_lifetime(at("clutter", i, "lifetime"), c.birth_scan, c.death_scan, s.num_scans);
+    if (!e.empty()) return e;
+    const TimeVariation& v = c.variation;
+    if (!finite(v.count_sin_amplitude) || v.count_sin_amplitude < -1.0) {
+      return at("clutter", i, "variation.count_sin_amplitude") + ": expected a number >= -1";
+    }
+    if (!c.uniform) {
+      if (!finite(c.mean_range_m)) return at("clutter", i, "mean.range_m") + ": expected a finite number";
+      if (!finite(c.mean_azimuth_deg)) return at("clutter", i, "mean.azimuth_deg") + ": expected a finite number";
+      if (!positive(c.sigma_range_m)) return at("clutter", i, "spread.sigma_range_m") + ": expected a positive number";
+      if (!positive(c.sigma_azimuth_deg)) {
+        return at("clutter", i, "spread.sigma_azimuth_deg") + ": expected a positive number";
+      }
+      if (!finite(c.correlation) || !(c.correlation > -1.0 && c.correlation < 1.0)) {
+        return at("clutter", i, "spread.correlation") + ": expected a number in (-1, 1)";
+      }
+      if (!positive(v.cov_scale_start)) return at("clutter", i, "variation.cov_scale") + ": expected positive numbers";
+      if (!positive(v.cov_scale_end)) return at("clutter", i, "variation.cov_scale") + ": expected positive numbers";
+      if (!finite(v.drift_range_mps) || !finite(v.drift_azimuth_deg_s)) {
+        return at("clutter", i, "variation.drift") + ": expected finite numbers";
+      }
+    }
+  }
+  return {};
+}
+
+bool operator==(const MotionSegment& a, const MotionSegment& b) {
+  return a.start_s == b.start_s && a.kind == b.kind && a.accel_mps2 == b.accel_mps2 &&
+         a.turn_rate_deg_s == b.turn_rate_deg_s && a.velocity_mps == b.velocity_mps;
+}
+
+bool operator==(const TargetSpec& a, const TargetSpec& b) {
+  return a.id == b.id && a.initial_state == b.initial_state && a.birth_scan == b.birth_scan &&
+         a.death_scan == b.death_scan && a.snr == b.snr && a.swerling == b.swerling && a.motion == b.motion;
+}
+
+bool operator==(const TimeVariation& a, const TimeVariation& b) {
+  return a.count_sin_amplitude == b.count_sin_amplitude && a.cov_scale_start == b.cov_scale_start &&
+         a.cov_scale_end == b.cov_scale_end && a.drift_range_mps == b.drift_range_mps &&
+         a.drift_azimuth_deg_s == b.drift_azimuth_deg_s;
+}
+
+bool operator==(const ClutterSpec& a, const ClutterSpec& b) {
+  return a.id == b.id && a.uniform == b.uniform && a.mean_count == b.mean_count &&
+         a.mean_range_m == b.mean_range_m && a.mean_azimuth_deg == b.mean_azimuth_deg &&
+         a.sigma_range_m == b.sigma_range_m && a.sigma_azimuth_deg == b.sigma_azimuth_deg &&
+         a.correlation == b.correlation && a.cnr == b.cnr && a.swerling == b.swerling &&
+         a.birth_scan == b.birth_scan && a.death_scan == b.death_scan && a.variation == b.variation;
+}
+
+bool operator==(const Region& a, const Region& b) {
+  return a.range_min_m == b.range_min_m && a.range_max_m == b.range_max_m &&
+         a.azimuth_min_deg == b.azimuth_min_deg && a.azimuth_max_deg == b.azimuth_max_deg;
+}
+
+bool operator==(const ScenarioSpec& a, const ScenarioSpec& b) {
+  return a.name == b.name && a.description == b.description && a.num_scans == b.num_scans &&
+         a.scan_period_s == b.scan_period_s && a.region == b.region && a.sigma_range_m == b.sigma_range_m &&
+         a.sigma_azimuth_deg == b.sigma_azimuth_deg && a.threshold == b.threshold &&
+         a.eval_first_scan == b.eval_first_scan && a.eval_last_scan == b.eval_last_scan &&
+         a.targets == b.targets && a.clutter == b.clutter;
+}
+
+}  // namespace mptrack::scenario

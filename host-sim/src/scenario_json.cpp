@@ -1,0 +1,389 @@
+// Strict JSON scenario reader/writer; see scenario_json.h.
+#include "scenario_json.h"
+
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <ostream>
+#include <sstream>
+
+#include "mptrack/scenario/builtin.h"
+
+namespace mptrack::sim {
+
+using json = nlohmann::ordered_json;
+using scenario::ClutterSpec;
+using scenario::MotionKind;
+using scenario::MotionSegment;
+using scenario::ScenarioSpec;
+using scenario::Swerling;
+using scenario::TargetSpec;
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw ScenarioError(path + ": " + what);
+}
+
+std::string join(const std::string& path, const char* key) {
+  return path.empty() ? std::string(key) : path + "." + key;
+}
+
+void require_object(const json& v, const std::string& path, std::initializer_list<const char*> allowed) {
+  if (!v.is_object()) fail(path.empty() ? std::string("(document)") : path, "expected an object");
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    bool known = false;
+    for (const char* k : allowed) known = known || it.key() == k;
+    if (!known) fail(join(path, it.key().c_str()), "unknown field");
+  }
+}
+
+const json& member(const json& obj, const std::string& path, const char* key) {
+  const auto it = obj.find(key);
+  if (it == obj.end()) fail(join(path, key), "missing");
+  return *it;
+}
+
+enum class Range { kAny, kPositive, kNonNegative };
+
+double number(const json& v, const std::string& path, Range range = Range::kAny) {
+  const char* expect = range == Range::kPositive      ? "expected a positive number"
+                       : range == Range::kNonNegative ? "expected a non-negative number"
+                                                      : "expected a finite number";
+  if (!v.is_number()) fail(path, expect);
+  const double x = v.get<double>();
+  if (!std::isfinite(x) || (range == Range::kPositive && !(x > 0.0)) ||
+      (range == Range::kNonNegative && !(x >= 0.0))) {
+    fail(path, expect);
+  }
+  return x;
+}
+
+double number_field(const json& obj, const std::string& path, const char* key, Range range = Range::kAny) {
+  return number(member(obj, path, key), join(path, key), range);
+}
+
+double optional_number(const json& obj, const std::string& path, const char* key, double fallback,
+                       Range range = Range::kAny) {
+  const auto it = obj.find(key);
+  return it == obj.end() ? fallback : number(*it, join(path, key), range);
+}
+
+std::uint32_t uint_value(const json& v, const std::string& path) {
+  if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() > 0xffffffffLL) {
+    fail(path, "expected a non-negative integer");
+  }
+  return static_cast<std::uint32_t>(v.get<std::int64_t>());
+}
+
+std::string string_field(const json& obj, const std::string& path, const char* key) {
+  const json& v = member(obj, path, key);
+  if (!v.is_string()) fail(join(path, key), "expected a string");
+  return v.get<std::string>();
+}
+
+template <std::size_t N>
+std::array<double, N> number_array(const json& obj, const std::string& path, const char* key) {
+  const json& v = member(obj, path, key);
+  const std::string p = join(path, key);
+  if (!v.is_array() || v.size() != N) fail(p, "expected an array of " + std::to_string(N) + " numbers");
+  std::array<double, N> out{};
+  for (std::size_t i = 0; i < N; ++i) out[i] = number(v[i], p + "[" + std::to_string(i) + "]");
+  return out;
+}
+
+void lifetime(const json& obj, const std::string& path, std::uint32_t& birth, std::uint32_t& death) {
+  const json& v = member(obj, path, "lifetime");
+  const std::string p = join(path, "lifetime");
+  if (!v.is_array() || v.size() != 2) fail(p, "expected [birth_scan, death_scan]");
+  birth = uint_value(v[0], p + "[0]");
+  death = uint_value(v[1], p + "[1]");
+}
+
+Swerling swerling(const json& obj, const std::string& path) {
+  const auto it = obj.find("swerling");
+  if (it == obj.end()) return Swerling::kOne;
+  if (!it->is_number_integer() || (it->get<int>() != 1 && it->get<int>() != 3)) {
+    fail(join(path, "swerling"), "expected 1 or 3");
+  }
+  return it->get<int>() == 3 ? Swerling::kThree : Swerling::kOne;
+}
+
+MotionSegment motion_segment(const json& v, const std::string& path) {
+  MotionSegment m;
+  const std::string type = v.is_object() ? string_field(v, path, "type") : std::string();
+  if (type == "cv") {
+    require_object(v, path, {"start_s", "type"});
+    m.kind = MotionKind::kConstantVelocity;
+  } else if (type == "ca") {
+    require_object(v, path, {"start_s", "type", "accel_mps2"});
+    m.kind = MotionKind::kConstantAcceleration;
+    m.accel_mps2 = number_array<2>(v, path, "accel_mps2");
+  } else if (type == "ct") {
+    require_object(v, path, {"start_s", "type", "turn_rate_deg_s"});
+    m.kind = MotionKind::kCoordinatedTurn;
+    m.turn_rate_deg_s = number_field(v, path, "turn_rate_deg_s");
+  } else if (type == "set_velocity") {
+    require_object(v, path, {"start_s", "type", "velocity_mps"});
+    m.kind = MotionKind::kSetVelocity;
+    m.velocity_mps = number_array<2>(v, path, "velocity_mps");
+  } else {
+    if (!v.is_object()) fail(path, "expected an object");
+    fail(join(path, "type"), "expected \"cv\", \"ca\", \"ct\" or \"set_velocity\"");
+  }
+  m.start_s = number_field(v, path, "start_s");
+  return m;
+}
+
+TargetSpec target(const json& v, const std::string& path) {
+  require_object(v, path, {"id", "initial_state", "lifetime", "snr", "swerling", "motion"});
+  TargetSpec t;
+  t.id = uint_value(member(v, path, "id"), join(path, "id"));
+  t.initial_state = number_array<4>(v, path, "initial_state");
+  lifetime(v, path, t.birth_scan, t.death_scan);
+  t.snr = number_field(v, path, "snr", Range::kPositive);
+  t.swerling = swerling(v, path);
+  const auto it = v.find("motion");
+  if (it != v.end()) {
+    const std::string p = join(path, "motion");
+    if (!it->is_array()) fail(p, "expected an array of segments");
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      t.motion.push_back(motion_segment((*it)[i], p + "[" + std::to_string(i) + "]"));
+    }
+  }
+  return t;
+}
+
+ClutterSpec clutter(const json& v, const std::string& path) {
+  ClutterSpec c;
+  const std::string type = v.is_object() ? string_field(v, path, "type") : std::string();
+  if (type == "uniform") {
+    require_object(v, path, {"id", "type", "mean_count", "cnr", "swerling", "lifetime", "variation"});
+    c.uniform = true;
+  } else if (type == "gaussian") {
+    require_object(v, path,
+                   {"id", "type", "mean_count", "mean", "spread", "cnr", "swerling", "lifetime", "variation"});
+    c.uniform = false;
+    const std::string pm = join(path, "mean");
+    const json& mean = member(v, path, "mean");
+    require_object(mean, pm, {"range_m", "azimuth_deg"});
+    c.mean_range_m = number_field(mean, pm, "range_m", Range::kNonNegative);
+    c.mean_azimuth_deg = number_field(mean, pm, "azimuth_deg");
+    const std::string ps = join(path, "spread");
+    const json& spread = member(v, path, "spread");
+    require_object(spread, ps, {"sigma_range_m", "sigma_azimuth_deg", "correlation"});
+    c.sigma_range_m = number_field(spread, ps, "sigma_range_m", Range::kPositive);
+    c.sigma_azimuth_deg = number_field(spread, ps, "sigma_azimuth_deg", Range::kPositive);
+    c.correlation = optional_number(spread, ps, "correlation", 0.0);
+  } else {
+    if (!v.is_object()) fail(path, "expected an object");
+    fail(join(path, "type"), "expected \"uniform\" or \"gaussian\"");
+  }
+  c.id = uint_value(member(v, path, "id"), join(path, "id"));
+  c.mean_count = number_field(v, path, "mean_count", Range::kNonNegative);
+  c.cnr = number_field(v, path, "cnr", Range::kPositive);
+  c.swerling = swerling(v, path);
+  lifetime(v, path, c.birth_scan, c.death_scan);
+  const auto it = v.find("variation");
+  if (it != v.end()) {
+    const std::string pv = join(path, "variation");
+    require_object(*it, pv, {"count_sin_amplitude", "cov_scale", "drift_range_mps", "drift_azimuth_deg_s"});
+    c.variation.count_sin_amplitude = optional_number(*it, pv, "count_sin_amplitude", 0.0);
+    if (it->contains("cov_scale")) {
+      const auto s = number_array<2>(*it, pv, "cov_scale");
+      c.variation.cov_scale_start = s[0];
+      c.variation.cov_scale_end = s[1];
+    }
+    c.variation.drift_range_mps = optional_number(*it, pv, "drift_range_mps", 0.0);
+    c.variation.drift_azimuth_deg_s = optional_number(*it, pv, "drift_azimuth_deg_s", 0.0);
+  }
+  return c;
+}
+
+json lifetime_json(std::uint32_t birth, std::uint32_t death) { return json::array({birth, death}); }
+
+// Indented like dump(2), but arrays of scalars stay on one line ([1, 340]).
+void pretty(std::ostream& out, const json& v, int indent) {
+  const std::string pad(static_cast<std::size_t>(indent) + 2, ' ');
+  if (v.is_object() && !v.empty()) {
+    out << "{\n";
+    std::size_t i = 0;
+    for (auto it = v.begin(); it != v.end(); ++it, ++i) {
+      out << pad << json(it.key()).dump() << ": ";
+      pretty(out, it.value(), indent + 2);
+      out << (i + 1 < v.size() ? ",\n" : "\n");
+    }
+    out << std::string(static_cast<std::size_t>(indent), ' ') << "}";
+    return;
+  }
+  if (v.is_array() && !v.empty()) {
+    bool scalars = true;
+    for (const auto& e : v) scalars = scalars && e.is_primitive();
+    if (scalars) {
+      out << "[";
+      for (std::size_t i = 0; i < v.size(); ++i) out << (i ? ", " : "") << v[i].dump();
+      out << "]";
+      return;
+    }
+    out << "[\n";
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      out << pad;
+      pretty(out, v[i], indent + 2);
+      out << (i + 1 < v.size() ? ",\n" : "\n");
+    }
+    out << std::string(static_cast<std::size_t>(indent), ' ') << "]";
+    return;
+  }
+  out << v.dump();
+}
+
+}  // namespace
+
+ScenarioSpec scenario_from_json(const json& doc) {
+  require_object(doc, "", {"schema", "name", "description", "scans", "scan_period_s", "region",
+                           "measurement_noise", "threshold", "evaluation", "targets", "clutter"});
+  ScenarioSpec s;
+  if (string_field(doc, "", "schema") != kScenarioSchema) {
+    fail("schema", std::string("expected \"") + kScenarioSchema + "\"");
+  }
+  s.name = string_field(doc, "", "name");
+  s.description = doc.contains("description") ? string_field(doc, "", "description") : std::string();
+  s.num_scans = uint_value(member(doc, "", "scans"), "scans");
+  s.scan_period_s = number_field(doc, "", "scan_period_s", Range::kPositive);
+
+  const json& region = member(doc, "", "region");
+  require_object(region, "region", {"range_m", "azimuth_deg"});
+  const auto rr = number_array<2>(region, "region", "range_m");
+  const auto ra = number_array<2>(region, "region", "azimuth_deg");
+  s.region = scenario::Region{rr[0], rr[1], ra[0], ra[1]};
+
+  const json& noise = member(doc, "", "measurement_noise");
+  require_object(noise, "measurement_noise", {"sigma_range_m", "sigma_azimuth_deg"});
+  s.sigma_range_m = number_field(noise, "measurement_noise", "sigma_range_m", Range::kPositive);
+  s.sigma_azimuth_deg = number_field(noise, "measurement_noise", "sigma_azimuth_deg", Range::kPositive);
+  s.threshold = number_field(doc, "", "threshold", Range::kPositive);
+
+  s.eval_first_scan = 1;
+  s.eval_last_scan = s.num_scans;
+  const auto ev = doc.find("evaluation");
+  if (ev != doc.end()) {
+    require_object(*ev, "evaluation", {"first_scan", "last_scan"});
+    if (ev->contains("first_scan")) s.eval_first_scan = uint_value((*ev)["first_scan"], "evaluation.first_scan");
+    if (ev->contains("last_scan")) s.eval_last_scan = uint_value((*ev)["last_scan"], "evaluation.last_scan");
+  }
+
+  const json& targets = member(doc, "", "targets");
+  if (!targets.is_array()) fail("targets", "expected an array");
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    s.targets.push_back(target(targets[i], "targets[" + std::to_string(i) + "]"));
+  }
+  const json& clut = member(doc, "", "clutter");
+  if (!clut.is_array()) fail("clutter", "expected an array");
+  for (std::size_t i = 0; i < clut.size(); ++i) {
+    s.clutter.push_back(clutter(clut[i], "clutter[" + std::to_string(i) + "]"));
+  }
+
+  const std::string error = scenario::validate(s);
+  if (!error.empty()) throw ScenarioError(error);
+  return s;
+}
+
+json scenario_to_json(const ScenarioSpec& s) {
+  json doc = json::object();
+  doc["schema"] = kScenarioSchema;
+  doc["name"] = s.name;
+  doc["description"] = s.description;
+  doc["scans"] = s.num_scans;
+  doc["scan_period_s"] = s.scan_period_s;
+  doc["region"] = {{"range_m", {s.region.range_min_m, s.region.range_max_m}},
+                   {"azimuth_deg", {s.region.azimuth_min_deg, s.region.azimuth_max_deg}}};
+  doc["measurement_noise"] = {{"sigma_range_m", s.sigma_range_m}, {"sigma_azimuth_deg", s.sigma_azimuth_deg}};
+  doc["threshold"] = s.threshold;
+  doc["evaluation"] = {{"first_scan", s.eval_first_scan}, {"last_scan", s.eval_last_scan}};
+  json targets = json::array();
+  for (const TargetSpec& t : s.targets) {
+    json j = {{"id", t.id},
+              {"initial_state", t.initial_state},
+              {"lifetime", lifetime_json(t.birth_scan, t.death_scan)},
+              {"snr", t.snr},
+              {"swerling", static_cast<int>(t.swerling)}};
+    json motion = json::array();
+    for (const MotionSegment& m : t.motion) {
+      json seg = {{"start_s", m.start_s}};
+      switch (m.kind) {
+        case MotionKind::kConstantVelocity: seg["type"] = "cv"; break;
+        case MotionKind::kConstantAcceleration:
+          seg["type"] = "ca";
+          seg["accel_mps2"] = m.accel_mps2;
+          break;
+        case MotionKind::kCoordinatedTurn:
+          seg["type"] = "ct";
+          seg["turn_rate_deg_s"] = m.turn_rate_deg_s;
+          break;
+        case MotionKind::kSetVelocity:
+          seg["type"] = "set_velocity";
+          seg["velocity_mps"] = m.velocity_mps;
+          break;
+      }
+      motion.push_back(seg);
+    }
+    j["motion"] = motion;
+    targets.push_back(j);
+  }
+  doc["targets"] = targets;
+  json clut = json::array();
+  for (const ClutterSpec& c : s.clutter) {
+    json j = {{"id", c.id}, {"type", c.uniform ? "uniform" : "gaussian"}, {"mean_count", c.mean_count}};
+    if (!c.uniform) {
+      j["mean"] = {{"range_m", c.mean_range_m}, {"azimuth_deg", c.mean_azimuth_deg}};
+      j["spread"] = {{"sigma_range_m", c.sigma_range_m},
+                     {"sigma_azimuth_deg", c.sigma_azimuth_deg},
+                     {"correlation", c.correlation}};
+    }
+    j["cnr"] = c.cnr;
+    j["swerling"] = static_cast<int>(c.swerling);
+    j["lifetime"] = lifetime_json(c.birth_scan, c.death_scan);
+    const scenario::TimeVariation& v = c.variation;
+    if (!(v == scenario::TimeVariation{})) {
+      j["variation"] = {{"count_sin_amplitude", v.count_sin_amplitude},
+                        {"cov_scale", {v.cov_scale_start, v.cov_scale_end}},
+                        {"drift_range_mps", v.drift_range_mps},
+                        {"drift_azimuth_deg_s", v.drift_azimuth_deg_s}};
+    }
+    clut.push_back(j);
+  }
+  doc["clutter"] = clut;
+  return doc;
+}
+
+ScenarioSpec load_scenario_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ScenarioError(path + ": cannot open file");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw ScenarioError(path + ": invalid JSON (" + e.what() + ")");
+  }
+  try {
+    return scenario_from_json(doc);
+  } catch (const ScenarioError& e) {
+    throw ScenarioError(path + ": " + e.what());
+  }
+}
+
+void save_scenario_file(const ScenarioSpec& spec, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw ScenarioError(path + ": cannot write file");
+  pretty(out, scenario_to_json(spec), 0);
+  out << "\n";
+  if (!out) throw ScenarioError(path + ": write failed");
+}
+
+ScenarioSpec resolve_scenario(const std::string& name_or_file) {
+  ScenarioSpec s;
+  if (scenario::builtin_scenario(name_or_file, s)) return s;
+  return load_scenario_file(name_or_file);
+}
+
+}  // namespace mptrack::sim

@@ -1,0 +1,147 @@
+// Seed 004 tracker configurations; see adc_trackers.h.
+#include "stream/adc_trackers.h"
+
+#include <cmath>
+
+#include "mptrack/adc/frontend_config.h"
+#include "mptrack/frontend/cfar.h"
+#include "mptrack/math/detmath.h"
+#include "tracker_registry.h"
+#include "trackers/core_adapter.h"
+#if MPTRACK_SIM_HAVE_MFBP
+#include "mptrack/mfbp/mfbp_tracker.h"
+#endif
+#if MPTRACK_SIM_HAVE_GNN
+#include "mptrack/gnn/gnn_tracker.h"
+#endif
+
+namespace mptrack::sim {
+
+double cfar_amplitude_threshold(const adc::AdcScenario& s) {
+  frontend::Cfar cfar;
+  if (cfar.init(adc::frontend_params_for(s).cfar) != Status::kOk) return 1.0;
+  return std::sqrt(cfar.alpha());
+}
+
+scenario::ScenarioSpec tracker_view(const adc::AdcScenario& s) {
+  scenario::ScenarioSpec v;
+  v.name = s.name;
+  v.description = s.description;
+  v.num_scans = s.num_frames;
+  v.scan_period_s = s.frame_period_s;
+  v.region.range_min_m = s.frontend.min_range_m > 0.5 ? s.frontend.min_range_m : 0.5;
+  v.region.range_max_m = s.frontend.max_range_m;
+  v.region.azimuth_min_deg = 90.0 - s.frontend.max_abs_bearing_deg;
+  v.region.azimuth_max_deg = 90.0 + s.frontend.max_abs_bearing_deg;
+  v.sigma_range_m = s.tracker_model.sigma_range_m;
+  v.sigma_azimuth_deg = s.tracker_model.sigma_bearing_deg;
+  v.threshold = cfar_amplitude_threshold(s);
+  v.eval_first_scan = 1;
+  v.eval_last_scan = s.num_frames;
+  // Clutter regions as Gaussian components (uniform extent -> std = width / sqrt(12)).
+  for (const adc::ClutterPatchSpec& p : s.clutter_patches) {
+    scenario::ClutterSpec c;
+    c.id = p.id;
+    c.mean_count = 1.0;
+    c.mean_range_m = 0.5 * (p.range_min_m + p.range_max_m);
+    c.mean_azimuth_deg = 90.0 - 0.5 * (p.bearing_min_deg + p.bearing_max_deg);
+    c.sigma_range_m = (p.range_max_m - p.range_min_m) / std::sqrt(12.0);
+    c.sigma_azimuth_deg = (p.bearing_max_deg - p.bearing_min_deg) / std::sqrt(12.0);
+    c.birth_scan = p.birth_frame;
+    c.death_scan = p.death_frame;
+    v.clutter.push_back(c);
+  }
+  for (const adc::ChaffCloudSpec& p : s.chaff_clouds) {
+    scenario::ClutterSpec c;
+    c.id = p.id;
+    c.mean_count = 1.0;
+    c.mean_range_m = std::hypot(p.centre_m[0], p.centre_m[1]);
+    c.mean_azimuth_deg = dmath::datan2(p.centre_m[1], p.centre_m[0]) * (180.0 / dmath::kPi<double>);
+    c.sigma_range_m = p.sigma0_m;
+    c.sigma_azimuth_deg = p.sigma0_m / c.mean_range_m * (180.0 / dmath::kPi<double>);
+    c.birth_scan = p.birth_frame;
+    c.death_scan = p.death_frame;
+    // Drift in polar coordinates, approximated at the centre (plot only).
+    const double ux = p.centre_m[0] / c.mean_range_m, uy = p.centre_m[1] / c.mean_range_m;
+    c.variation.drift_range_mps = p.drift_mps[0] * ux + p.drift_mps[1] * uy;
+    c.variation.drift_azimuth_deg_s =
+        (p.drift_mps[1] * ux - p.drift_mps[0] * uy) / c.mean_range_m * (180.0 / dmath::kPi<double>);
+    v.clutter.push_back(c);
+  }
+  return v;
+}
+
+namespace {
+
+#if MPTRACK_SIM_HAVE_MFBP
+class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, DefaultCaps>> {
+ public:
+  explicit AdcMfbpAdapter(bool filter) : filter_(filter) {}
+  std::string init(const TrackerSetup& setup) override {
+    const scenario::ScenarioSpec& s = setup.spec;
+    MfbpParams<double> p = seed000_default_params<double>();
+    p.r_min_m = s.region.range_min_m;
+    p.r_max_m = s.region.range_max_m;
+    p.az_min_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
+    p.az_max_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+    p.scan_period_s = s.scan_period_s;
+    p.sigma_r_m = s.sigma_range_m;
+    p.sigma_az_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
+    p.amplitude_threshold = s.threshold;
+    p.swerling = 3;                   // spec 5.1: Swerling 3 drones
+    p.process_noise_var = 9.0;        // (3 m/s^2)^2: track 3 turns at ~8.5 m/s^2 (spec 5.2)
+    p.v_max_x_mps = 12.0;             // drones fly at 7 m/s (spec 5.2)
+    p.v_max_y_mps = 12.0;
+    p.uniform_rate_per_scan = 1.0;    // CFAR false alarms: ~1 per frame at pfa 1e-4
+    p.uniform_cnr_prior = 1.0;
+    p.clutter_cell_range_m = 8.0;     // about one range resolution cell (7.5 m)
+    p.clutter_cell_az_rad = scenario::deg_to_rad(8.0);
+    // Visibility chain: spec 5.1 p_s = 0.95. At 10 Hz a drone beyond 50 m is
+    // detected in about half the frames (Pd ~0.5 at SNR_c < 10 dB), so a
+    // track must survive runs of misses: delete after 6 low-visibility frames.
+    p.p_survive = 0.95;
+    p.delete_run = 6;
+    p.tentative_timeout_scans = 10;
+    if (filter_) {
+      p.window_length = 1;
+      p.slide = 1;
+    }
+    return init_tracker(p);
+  }
+
+ private:
+  bool filter_;
+};
+#endif
+
+#if MPTRACK_SIM_HAVE_GNN
+class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, DefaultCaps>> {
+ public:
+  std::string init(const TrackerSetup& setup) override {
+    const scenario::ScenarioSpec& s = setup.spec;
+    GnnParams<double> p;  // defaults: seed 004 spec 2.5
+    p.sigma_range_m = s.sigma_range_m;
+    p.sigma_azimuth_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
+    p.min_range_m = s.region.range_min_m;
+    p.max_range_m = s.region.range_max_m;
+    p.min_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
+    p.max_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+    return init_tracker(p);
+  }
+};
+#endif
+
+}  // namespace
+
+std::unique_ptr<TrackerAdapter> make_adc_tracker(const std::string& name, std::string& error) {
+#if MPTRACK_SIM_HAVE_MFBP
+  if (name == "mfbp") return std::make_unique<AdcMfbpAdapter>(false);
+  if (name == "mfbp-filter") return std::make_unique<AdcMfbpAdapter>(true);
+#endif
+#if MPTRACK_SIM_HAVE_GNN
+  if (name == "gnn") return std::make_unique<AdcGnnAdapter>();
+#endif
+  return make_tracker(name, error);
+}
+
+}  // namespace mptrack::sim

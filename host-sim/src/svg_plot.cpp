@@ -1,0 +1,180 @@
+#include "svg_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "mptrack/math/detmath.h"
+
+namespace mptrack::sim {
+
+namespace {
+
+constexpr const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b",
+                                    "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#ff7f0e"};
+
+std::string f1(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", x);
+  return b;
+}
+
+std::string escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '<') o += "&lt;";
+    else if (c == '>') o += "&gt;";
+    else if (c == '&') o += "&amp;";
+    else o += c;
+  }
+  return o;
+}
+
+struct Frame {  // maps data to a pixel box
+  double x0, x1, y0, y1;        // data range
+  double px, py, pw, ph;        // pixel box
+  double sx(double x) const { return px + (x - x0) / (x1 - x0) * pw; }
+  double sy(double y) const { return py + ph - (y - y0) / (y1 - y0) * ph; }
+};
+
+void polar_to_xy(double r, double az, double& x, double& y) {
+  double s = 0.0, c = 0.0;
+  dmath::dsincos(az, s, c);
+  x = r * c;
+  y = r * s;
+}
+
+// 2-sigma contour of a polar Gaussian, mapped point by point to x/y.
+std::string ellipse_path(const Frame& f, double mr, double ma, double crr, double cra, double caa) {
+  const double l11 = std::sqrt(std::max(crr, 0.0));
+  const double l21 = l11 > 0.0 ? cra / l11 : 0.0;
+  const double l22 = std::sqrt(std::max(caa - l21 * l21, 0.0));
+  std::ostringstream d;
+  constexpr int kPoints = 48;
+  for (int i = 0; i <= kPoints; ++i) {
+    double s = 0.0, c = 0.0;
+    dmath::dsincos(2.0 * scenario::kPi * i / kPoints, s, c);
+    const double r = mr + 2.0 * l11 * c;
+    const double a = ma + 2.0 * (l21 * c + l22 * s);
+    double x = 0.0, y = 0.0;
+    polar_to_xy(r, a, x, y);
+    d << (i == 0 ? "M" : "L") << f1(f.sx(x / 1000.0)) << ',' << f1(f.sy(y / 1000.0));
+  }
+  return d.str();
+}
+
+}  // namespace
+
+void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
+                    const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& estimates,
+                    const std::vector<double>& ospa_per_scan, const std::string& title) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write");
+  constexpr double kW = 1200, kH = 560;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kW << "\" height=\"" << kH
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"20\" y=\"24\" font-size=\"15\">" << escape(title) << "</text>\n";
+
+  // ---- left panel: x/y in km, square aspect over the region's bounding box ----
+  const scenario::Region& reg = spec.region;
+  const double a0 = scenario::deg_to_rad(reg.azimuth_min_deg);
+  const double a1 = scenario::deg_to_rad(reg.azimuth_max_deg);
+  double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+  std::vector<std::pair<double, double>> outline;
+  for (int i = 0; i <= 40; ++i) {
+    double x = 0.0, y = 0.0;
+    polar_to_xy(reg.range_max_m, a0 + (a1 - a0) * i / 40.0, x, y);
+    outline.emplace_back(x / 1000.0, y / 1000.0);
+  }
+  for (int i = 40; i >= 0; --i) {
+    double x = 0.0, y = 0.0;
+    polar_to_xy(reg.range_min_m, a0 + (a1 - a0) * i / 40.0, x, y);
+    outline.emplace_back(x / 1000.0, y / 1000.0);
+  }
+  for (const auto& p : outline) {
+    xmin = std::min(xmin, p.first);
+    xmax = std::max(xmax, p.first);
+    ymin = std::min(ymin, p.second);
+    ymax = std::max(ymax, p.second);
+  }
+  const double span = std::max(xmax - xmin, ymax - ymin) * 1.04;
+  const double cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax);
+  const Frame xy{cx - span / 2, cx + span / 2, cy - span / 2, cy + span / 2, 60, 50, 470, 470};
+  out << "<rect x=\"60\" y=\"50\" width=\"470\" height=\"470\" fill=\"none\" stroke=\"#888\"/>\n";
+  out << "<path fill=\"#f4f4f4\" stroke=\"#aaa\" d=\"";
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    out << (i == 0 ? "M" : "L") << f1(xy.sx(outline[i].first)) << ',' << f1(xy.sy(outline[i].second));
+  }
+  out << "Z\"/>\n";
+  out << "<text x=\"295\" y=\"545\" text-anchor=\"middle\">x [km] (" << f1(xy.x0) << " .. " << f1(xy.x1)
+      << ")</text>\n<text x=\"20\" y=\"285\" transform=\"rotate(-90 20 285)\" text-anchor=\"middle\">y [km] ("
+      << f1(xy.y0) << " .. " << f1(xy.y1) << ")</text>\n";
+
+  // True clutter components at mid-life (dashed grey).
+  for (const scenario::ClutterSpec& c : spec.clutter) {
+    if (c.uniform) continue;
+    const std::uint32_t mid = (c.birth_scan + c.death_scan) / 2;
+    const scenario::ClutterAtScan p = scenario::clutter_at_scan(spec, c, mid);
+    out << "<path fill=\"none\" stroke=\"#555\" stroke-dasharray=\"5,3\" d=\""
+        << ellipse_path(xy, p.mean_range_m, p.mean_azimuth_rad, p.cov_rr, p.cov_ra, p.cov_aa) << "\"/>\n";
+  }
+  // Estimated non-uniform clutter, every 10th scan (orange).
+  for (const EstimateOut& e : estimates) {
+    if (e.scan % 10 != 0) continue;
+    for (const ClutterOut& c : e.clutter) {
+      if (c.uniform) continue;
+      out << "<path fill=\"none\" stroke=\"#ff7f0e\" stroke-opacity=\"0.6\" d=\""
+          << ellipse_path(xy, c.mean_range_m, c.mean_azimuth_rad, c.cov_rr, c.cov_ra, c.cov_aa) << "\"/>\n";
+    }
+  }
+  // Truth trajectories.
+  std::map<std::uint32_t, std::string> truth_paths;
+  for (const scenario::SimScan& s : scans) {
+    for (const auto& t : s.truth) {
+      std::string& d = truth_paths[t.target_id];
+      d += (d.empty() ? "M" : "L") + f1(xy.sx(t.x.px / 1000.0)) + "," + f1(xy.sy(t.x.py / 1000.0));
+    }
+  }
+  for (const auto& [id, d] : truth_paths) {
+    out << "<path fill=\"none\" stroke=\"black\" stroke-width=\"2\" d=\"" << d << "\"/>\n";
+  }
+  // Confirmed tracks: dots coloured by id.
+  for (const EstimateOut& e : estimates) {
+    for (const TrackOut& t : e.tracks) {
+      if (!t.confirmed) continue;
+      out << "<circle r=\"1.4\" fill=\"" << kPalette[t.id % 10] << "\" cx=\"" << f1(xy.sx(t.px / 1000.0))
+          << "\" cy=\"" << f1(xy.sy(t.py / 1000.0)) << "\"/>\n";
+    }
+  }
+  out << "<text x=\"70\" y=\"68\">black: truth, dots: confirmed tracks (colour = id), dashed: true clutter "
+         "(2&#963;), orange: estimated clutter</text>\n";
+
+  // ---- right panel: OSPA over time ----
+  const double n = static_cast<double>(std::max<std::size_t>(ospa_per_scan.size(), 1));
+  double omax = 100.0;
+  for (double v : ospa_per_scan) omax = std::max(omax, v);
+  const Frame os{1.0, std::max(n, 2.0), 0.0, omax * 1.05, 640, 50, 520, 470};
+  out << "<rect x=\"640\" y=\"50\" width=\"520\" height=\"470\" fill=\"none\" stroke=\"#888\"/>\n";
+  out << "<rect x=\"" << f1(os.sx(spec.eval_first_scan)) << "\" y=\"50\" width=\""
+      << f1(os.sx(spec.eval_last_scan) - os.sx(spec.eval_first_scan)) << "\" height=\"470\" fill=\"#e8f0ff\"/>\n";
+  out << "<path fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\" d=\"";
+  for (std::size_t i = 0; i < ospa_per_scan.size(); ++i) {
+    out << (i == 0 ? "M" : "L") << f1(os.sx(static_cast<double>(i + 1))) << ',' << f1(os.sy(ospa_per_scan[i]));
+  }
+  out << "\"/>\n";
+  for (int i = 0; i <= 4; ++i) {
+    const double v = omax * 1.05 * i / 4.0;
+    out << "<text x=\"635\" y=\"" << f1(os.sy(v) + 4) << "\" text-anchor=\"end\">" << f1(v) << "</text>\n";
+  }
+  out << "<text x=\"900\" y=\"545\" text-anchor=\"middle\">scan (1 .. " << ospa_per_scan.size()
+      << "); shaded: evaluation interval</text>\n"
+      << "<text x=\"650\" y=\"68\">OSPA [m] (p = 2, c = 631 m), mean over runs</text>\n</svg>\n";
+  if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace mptrack::sim

@@ -1,0 +1,32 @@
+// --tracker names -> adapters. Entries whose core tracker is not in this
+// build are listed as unavailable (so --help can say why).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tracker_adapter.h"
+
+namespace mptrack::sim {
+
+struct TrackerInfo {
+  std::string name;
+  std::string description;
+  bool available = false;
+};
+
+/// Every registered name, in --help order.
+std::vector<TrackerInfo> tracker_list();
+
+/// A fresh adapter, or nullptr with `error` set (unknown or not built).
+std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::string& error);
+
+// Factories, one per adapter source file (defined only when built).
+std::unique_ptr<TrackerAdapter> make_oracle_tracker();
+std::unique_ptr<TrackerAdapter> make_mfbp_tracker(const std::string& variant);
+std::unique_ptr<TrackerAdapter> make_gnn_tracker();
+/// gmphd, gmcphd, cbmember and their -uniform/-known/-ki variants (nullptr if unknown).
+std::unique_ptr<TrackerAdapter> make_iggm_tracker(const std::string& name);
+
+}  // namespace mptrack::sim

@@ -1,0 +1,71 @@
+// Generic adapter for a core tracker that follows the track_report.h
+// contract (init/step/flush/outputs/counters). The tracker object can be
+// large (fixed caps), so it lives on the heap of the host process.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mptrack/scenario/generator.h"
+#include "tracker_adapter.h"
+
+namespace mptrack::sim {
+
+template <class Tracker>
+class CoreTrackerAdapter : public TrackerAdapter {
+ public:
+  using Scalar = typename Tracker::Scalar;
+  using Params = typename Tracker::Params;
+
+  CoreTrackerAdapter() : tracker_(std::make_unique<Tracker>()), scan_(std::make_unique<typename Tracker::ScanType>()) {}
+
+  Status step(const scenario::SimScan& scan, std::vector<EstimateOut>& out) override {
+    const Status conv = scenario::to_scan(scan, *scan_);
+    // Measurements past the tracker's cap are dropped here, and counted.
+    truncated_ += scan.measurements.size() - scan_->measurements.size();
+    before_step(scan.scan);
+    const Status st = tracker_->step(*scan_);
+    collect(out);
+    return st != Status::kOk ? st : conv;
+  }
+
+  Status flush(std::vector<EstimateOut>& out) override {
+    const Status st = tracker_->flush();
+    collect(out);
+    return st;
+  }
+
+  TrackerCounters counters() const override {
+    TrackerCounters c = tracker_->counters();
+    c.measurements_over_cap += truncated_;
+    return c;
+  }
+
+ protected:
+  /// Hook run before each step (e.g. the known clutter map of mfbp-kce).
+  virtual void before_step(std::uint32_t /*scan*/) {}
+
+  std::string init_tracker(const Params& params) {
+    const Status st = tracker_->init(params);
+    return st == Status::kOk ? std::string() : std::string("init failed: ") + to_string(st);
+  }
+
+  Tracker& tracker() { return *tracker_; }
+
+ private:
+  void collect(std::vector<EstimateOut>& out) {
+    for (const auto& e : tracker_->outputs()) out.push_back(to_estimate_out(e));
+  }
+
+  std::unique_ptr<Tracker> tracker_;
+  std::unique_ptr<typename Tracker::ScanType> scan_;
+  std::uint64_t truncated_ = 0;
+};
+
+/// The Swerling case the tracker assumes: the first target's (1 if none).
+inline int scenario_swerling(const scenario::ScenarioSpec& spec) {
+  return spec.targets.empty() ? 1 : static_cast<int>(spec.targets.front().swerling);
+}
+
+}  // namespace mptrack::sim
