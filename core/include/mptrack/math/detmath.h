@@ -44,8 +44,10 @@
 //   derf      [-10, 10]                         0.78    0.84     1
 //   derfc     [-10, 9.1] / [-10, 26.5]          1.14    1.19     1.5
 //
-// - Exhaustive float check (every float in the domain, same reference):
-//   dsin over |x| <= 102943 (2.4e9 values): 0.80 ulp.
+// - Exhaustive float checks (every float of the domain, same reference):
+//   dexp 0.68 and dexpm1 1.11 on [-87.3, 88.7]; dlog 0.84 on [denorm_min,
+//   max]; dlog1p 0.84 on [-0.999999, max]; dsin 0.80 and dcos 0.81 on
+//   |x| <= 102943 (2.4e9 values each).
 // - Near the zeros of lgamma (x = 1, 2) and digamma (x0 = 1.4616...) both
 //   zeros are built into the formulas, so the relative error stays small
 //   there too (lgamma <= 0.92 ulp for 1e-16 <= |x - zero| <= 0.1 against
