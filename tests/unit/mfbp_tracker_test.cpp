@@ -414,3 +414,60 @@ TEST_CASE("mfbp Doppler, when present, is used: tracking holds and velocity erro
   MESSAGE("mean radial velocity error without Doppler " << e0 << " m/s, with " << e1 << " m/s");
   CHECK(e1 < 0.5 * e0);
 }
+
+TEST_CASE("mfbp track IDs stay stable once both targets are confirmed") {
+  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
+  const auto reps = run(*trk, 40);
+  std::vector<std::uint32_t> ids;
+  for (const auto& r : reps) {
+    if (r.scan >= 15) ids.push_back(r.id);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  CHECK(ids.size() == 2u);  // one ID per target over scans 15..39
+}
+
+TEST_CASE("mfbp track cap overflow is counted and reported, never a crash") {
+  // 40 well-separated targets on a grid, no clutter: more than the 16 tracks
+  // of SmallBoardCaps can hold.
+  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
+  Scan<float, SmallBoardCaps::kMaxMeasurements> scan;
+  bool saw_cap = false;
+  for (int k = 0; k < 8; ++k) {
+    scan.time_us = 1000000u + static_cast<std::uint64_t>(k) * 1250000u;
+    scan.measurements.clear();
+    for (int t = 0; t < 40; ++t) {
+      Measurement<float> m;
+      m.range_m = 12000.0f + 900.0f * static_cast<float>(t) + 50.0f * static_cast<float>(k);
+      m.azimuth_rad = 0.3f + 0.01f * static_cast<float>(t % 5);
+      m.amplitude = 3.0f;
+      REQUIRE(scan.measurements.push_back(m) == Status::kOk);
+    }
+    const Status s = trk->step(scan);
+    CHECK((s == Status::kOk || s == Status::kCapacityExceeded));
+    saw_cap = saw_cap || s == Status::kCapacityExceeded;
+    CHECK(trk->live_tracks() <= SmallBoardCaps::kMaxTargets);
+  }
+  CHECK(saw_cap);
+  CHECK(trk->counters().track_cap_hits > 0u);
+  CHECK(trk->live_tracks() == SmallBoardCaps::kMaxTargets);
+}
+
+TEST_CASE("mfbp known clutter map can be replaced between scans and is validated") {
+  MfbpTracker<float, SmallBoardCaps> trk;
+  KnownClutter<float> kc;
+  CHECK(trk.set_known_clutter(kc) == Status::kNotInitialized);
+  MfbpParams<float> p = seed000_default_params<float>();
+  p.clutter_mode = ClutterMode::kKnown;
+  REQUIRE(trk.init(p) == Status::kOk);
+  kc.uniform_rate_per_scan = 12.0f;
+  kc.num_components = 1;
+  kc.components[0].rate_per_scan = 5.0f;
+  kc.components[0].mean << 20000.0f, 0.5f;
+  kc.components[0].covariance << 1e6f, 0.0f, 0.0f, 0.003f;
+  CHECK(trk.set_known_clutter(kc) == Status::kOk);
+  CHECK(trk.params().known_clutter.uniform_rate_per_scan == 12.0f);
+  kc.components[0].covariance << 1e6f, 0.0f, 0.0f, -1.0f;  // not positive definite
+  CHECK(trk.set_known_clutter(kc) == Status::kInvalidArgument);
+  CHECK(trk.params().known_clutter.components[0].covariance(1, 1) == 0.003f);  // unchanged
+}

@@ -149,7 +149,7 @@ struct MfbpParams {
   T v_max_y_mps = T(120);             ///< two-point birth gate [m/s]
   std::size_t birth_max_lag = 3;      ///< L_max: scans between the two birth points (<= 3)
   std::size_t birth_max_per_window = 20;  ///< N_birth,max, ranked by amplitude sum
-  bool late_birth = false;            ///< [impl] second birth pass after the MP loop, using the
+  bool late_birth = true;             ///< [impl] second birth pass after the MP loop, using the
                                       ///< association beliefs of new scans (see mfbp_tracker.h)
   T unexplained_threshold = T(0.2);   ///< measurement "unexplained" if sum_i a_ij below [-]
   T birth_max_component_share = T(1);  ///< [impl] no birth from a measurement that Gaussian

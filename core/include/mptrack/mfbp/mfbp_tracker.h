@@ -150,7 +150,8 @@ class MfbpTracker {
 
   /// Consumes one scan. kOutOfOrder (state unchanged) if time does not
   /// increase; kPartial if measurements were rejected (counted);
-  /// kCapacityExceeded if an internal cap was hit (see the file comment).
+  /// kCapacityExceeded if an internal cap was hit (see the file comment;
+  /// takes precedence over kPartial). Both are successes with losses.
   Status step(const ScanType& scan) {
     if (!initialized_) {
       ++counters_.scans_rejected;
