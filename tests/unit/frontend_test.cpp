@@ -157,7 +157,7 @@ TEST_CASE("frontend: over the detection cap the strongest are kept and the rest 
     t[k].amplitude = amps[k];
   }
   mptrack::test::synthesize<Seed>(p, t, 6, 0.1, 5, rig->cube);
-  REQUIRE(rig->fe.process(rig->cube, rig->scan) == Status::kOk);
+  REQUIRE(rig->fe.process(rig->cube, rig->scan) == Status::kCapacityExceeded);
   REQUIRE(rig->scan.measurements.size() == 3);
   CHECK(rig->fe.last_frame_dropped() >= 3);
   CHECK(rig->fe.counters().detections_over_cap == rig->fe.last_frame_dropped());

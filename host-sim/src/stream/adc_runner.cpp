@@ -257,7 +257,9 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
           r.cfar_us = times.ticks[3] * 1e-3;
           r.over_cap = static_cast<std::uint32_t>(fe->last_frame_dropped());
           scenario::SimScan& s = scans[f.frame - 1];
-          if (fst == Status::kOk) {
+          // kCapacityExceeded: the strongest detections were kept (the rest
+          // are counted in over_cap); the frame is still usable.
+          if (fst == Status::kOk || fst == Status::kCapacityExceeded) {
             for (const Measurement<float>& m : fe_scan.measurements) {
               scenario::SimMeasurement y;
               y.range_m = static_cast<double>(m.range_m);

@@ -107,7 +107,8 @@ class FrontEnd {
   /// out.has_doppler = (kNumChirps > 1). kNotInitialized before init();
   /// kInvalidInput (out left empty, counted) if the cube holds NaN/Inf.
   /// Over-cap detections: the strongest are kept, the rest counted in
-  /// counters().detections_over_cap and last_frame_dropped(); returns kOk.
+  /// counters().detections_over_cap and last_frame_dropped(), and the call
+  /// returns kCapacityExceeded (out is valid: a success with losses).
   template <class Sample, std::size_t N>
   Status process(const RadarCubeT<Caps, Sample>& cube, Scan<float, N>& out,
                  FrontEndStageTimes* times = nullptr) {
@@ -138,7 +139,7 @@ class FrontEnd {
     t0 = tick(times);
     stamp(times, FrontEndStage::kDetect, t1, t0);
     ++counters_.frames;
-    return Status::kOk;
+    return last_dropped_ > 0 ? Status::kCapacityExceeded : Status::kOk;
   }
 
   /// Per-virtual-channel complex calibration (see RangeMatchedFilter).
