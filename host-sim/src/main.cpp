@@ -1,6 +1,7 @@
 // mptrack-sim: the host harness command-line tool.
 //   mptrack-sim [run options]        Monte Carlo runs of one scenario and tracker
 //   mptrack-sim table5 [options]     seed 000 Table V (S1: MF-BP vs MF-BP-KI)
+//   mptrack-sim compare [options]    every tracker on identical measurements, side by side
 //   mptrack-sim demo                 seed004-drones end to end from raw ADC frames (--measurement-level:
 //                                    the short seed000-s2 run)
 //   mptrack-sim --scenario seed004-drones|mimo-interference [--frames N --rate HZ]   raw-ADC path
@@ -15,6 +16,7 @@
 #include "mptrack/caps.h"
 #include "mptrack/measurement.h"
 #include "mptrack/scenario/builtin.h"
+#include "compare.h"
 #include "runner.h"
 #include "scenario_json.h"
 #include "stream/adc_cli.h"
@@ -44,6 +46,10 @@ int run_info() {
   std::printf("trackers:\n");
   for (const auto& t : mptrack::sim::tracker_list()) {
     std::printf("  %-12s %s%s\n", t.name.c_str(), t.description.c_str(), t.available ? "" : " [not built]");
+  }
+  std::printf("tracker footprint (sizeof, DefaultCaps):\n");
+  for (const auto& f : mptrack::sim::tracker_footprints()) {
+    std::printf("  %-40s float %9zu B  double %9zu B\n", f.name.c_str(), f.bytes_float, f.bytes_double);
   }
   std::printf("scenarios:");
   for (const auto& n : mptrack::scenario::builtin_scenario_names()) std::printf(" %s", n.c_str());
@@ -251,6 +257,40 @@ int main(int argc, char** argv) {
   table5->add_option("--seed", t5_seed, "random seed")->capture_default_str();
   table5->add_option("--out", t5_out, "output directory")->capture_default_str();
   table5->add_option("--scans", t5_scans, "use only the first N scans (0 = all 340)");
+  auto* compare = app.add_subcommand(
+      "compare",
+      "run several trackers on identical measurement sets and write a comparison table\n"
+      "(DIR/compare.md, DIR/compare.json: mean OSPA, GOSPA with localisation/missed/false,\n"
+      "cardinality error, NFT, step() latency p50/p99/max) and DIR/ospa.svg (OSPA over time,\n"
+      "one line per tracker). Progress on stderr.\n"
+      "Example: mptrack-sim compare --scenario seed001-s2 --runs 20 --out out/cmp-s2");
+  std::string cmp_scenario = "seed000-s2";
+  std::string cmp_trackers;
+  std::uint32_t cmp_runs = 10;
+  std::uint64_t cmp_seed = 1;
+  std::string cmp_out;
+  std::uint32_t cmp_scans = 0;
+  double cmp_clutter_scale = 1.0;
+  double cmp_ospa_c = 0.0;
+  double cmp_ospa_p = 0.0;
+  compare->add_option("--scenario", cmp_scenario,
+                      "built-in name (seed000-s1..s3, seed001-s1..s5) or a scenario JSON file")
+      ->capture_default_str();
+  compare->add_option("--trackers", cmp_trackers,
+                      "comma-separated tracker names (see `mptrack-sim --help`). Default: polar scenarios "
+                      "mfbp,mfbp-filter,gmphd,gmcphd,cbmember,gmcphd-known,gnn; Cartesian (seed001) "
+                      "gmphd,gmphd-known,gmcphd,gmcphd-known,cbmember,cbmember-known (those built)");
+  compare->add_option("--runs", cmp_runs, "Monte Carlo runs (each tracker sees the same runs)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  compare->add_option("--seed", cmp_seed, "random seed (run r, scan k use stream (seed, r, k))")->capture_default_str();
+  compare->add_option("--out", cmp_out, "output directory (default out/compare-<scenario>)");
+  compare->add_option("--scans", cmp_scans, "use only the first N scans (0 = all)");
+  compare->add_option("--clutter-scale", cmp_clutter_scale, "multiply every clutter mean count")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  compare->add_option("--ospa-c", cmp_ospa_c, "OSPA/GOSPA cutoff c [m] (default: 300 for seed001, 631 for seed000)")
+      ->check(CLI::NonNegativeNumber);
+  compare->add_option("--ospa-p", cmp_ospa_p, "OSPA/GOSPA order p (default: 1 for seed001, 2 for seed000)")
+      ->check(CLI::NonNegativeNumber);
   auto* export_cmd = app.add_subcommand("scenario-export", "write a built-in scenario as a JSON template");
   std::string export_name, export_file;
   export_cmd->add_option("name", export_name, "built-in scenario name")->required();
@@ -271,6 +311,24 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (table5->parsed()) return run_table5(t5_runs, t5_seed, t5_out, t5_scans, !no_progress);
+    if (compare->parsed()) {
+      mptrack::sim::CompareConfig cc;
+      cc.spec = mptrack::sim::resolve_scenario(cmp_scenario);
+      truncate_scans(cc.spec, cmp_scans);
+      if (!cmp_trackers.empty()) cc.trackers = mptrack::sim::parse_tracker_list(cmp_trackers);
+      cc.runs = cmp_runs;
+      cc.seed = cmp_seed;
+      cc.clutter_scale = cmp_clutter_scale;
+      cc.ospa_cutoff_m = cmp_ospa_c;
+      cc.ospa_order = cmp_ospa_p;
+      cc.out_dir = cmp_out.empty() ? "out/compare-" + cc.spec.name : cmp_out;
+      cc.plot = !no_plot;
+      cc.progress = !no_progress;
+      const mptrack::sim::CompareResult r = mptrack::sim::run_compare(cc);
+      std::printf("%s", mptrack::sim::compare_to_markdown(r).c_str());
+      std::printf("wrote %s/{compare.md,compare.json%s}\n", cc.out_dir.c_str(), cc.plot ? ",ospa.svg" : "");
+      return 0;
+    }
 
     RunConfig cfg;
     if (demo->parsed() && !measurement_level) {

@@ -154,15 +154,55 @@ TargetSpec target(const json& v, const std::string& path) {
   return t;
 }
 
-ClutterSpec clutter(const json& v, const std::string& path) {
+// Optional "amplitude": {"model": "weibull", "shape": b, "scale": sigma0}
+// (seed 001 spec 3.4); it replaces "cnr" and "swerling".
+void clutter_amplitude(const json& v, const std::string& path, ClutterSpec& c) {
+  const std::string pa = join(path, "amplitude");
+  const json& a = member(v, path, "amplitude");
+  require_object(a, pa, {"model", "shape", "scale"});
+  if (string_field(a, pa, "model") != "weibull") fail(join(pa, "model"), "expected \"weibull\"");
+  c.amplitude = scenario::ClutterAmplitude::kWeibull;
+  c.weibull_shape = number_field(a, pa, "shape", Range::kPositive);
+  c.weibull_scale = number_field(a, pa, "scale", Range::kPositive);
+}
+
+ClutterSpec clutter(const json& v, const std::string& path, bool cartesian) {
   ClutterSpec c;
   const std::string type = v.is_object() ? string_field(v, path, "type") : std::string();
-  if (type == "uniform") {
-    require_object(v, path, {"id", "type", "mean_count", "cnr", "swerling", "lifetime", "variation"});
+  const bool weibull = v.is_object() && v.contains("amplitude");
+  if (weibull && (type == "uniform" || type == "gaussian")) {
+    if (type == "uniform") {
+      require_object(v, path, {"id", "type", "mean_count", "amplitude", "lifetime", "variation"});
+    } else {
+      require_object(v, path, {"id", "type", "mean_count", "mean", "spread", "amplitude", "lifetime", "variation"});
+    }
+    clutter_amplitude(v, path, c);
+  }
+  if (type == "gaussian" && cartesian) {
+    if (!weibull) {
+      require_object(v, path,
+                     {"id", "type", "mean_count", "mean", "spread", "cnr", "swerling", "lifetime", "variation"});
+    }
+    c.uniform = false;
+    const std::string pm = join(path, "mean");
+    const json& mean = member(v, path, "mean");
+    require_object(mean, pm, {"x_m", "y_m"});
+    c.mean_x_m = number_field(mean, pm, "x_m");
+    c.mean_y_m = number_field(mean, pm, "y_m");
+    const std::string ps = join(path, "spread");
+    const json& spread = member(v, path, "spread");
+    require_object(spread, ps, {"sigma_x_m", "sigma_y_m", "correlation"});
+    c.sigma_x_m = number_field(spread, ps, "sigma_x_m", Range::kPositive);
+    c.sigma_y_m = number_field(spread, ps, "sigma_y_m", Range::kPositive);
+    c.correlation = optional_number(spread, ps, "correlation", 0.0);
+  } else if (type == "uniform") {
+    if (!weibull) require_object(v, path, {"id", "type", "mean_count", "cnr", "swerling", "lifetime", "variation"});
     c.uniform = true;
   } else if (type == "gaussian") {
-    require_object(v, path,
-                   {"id", "type", "mean_count", "mean", "spread", "cnr", "swerling", "lifetime", "variation"});
+    if (!weibull) {
+      require_object(v, path,
+                     {"id", "type", "mean_count", "mean", "spread", "cnr", "swerling", "lifetime", "variation"});
+    }
     c.uniform = false;
     const std::string pm = join(path, "mean");
     const json& mean = member(v, path, "mean");
@@ -181,8 +221,10 @@ ClutterSpec clutter(const json& v, const std::string& path) {
   }
   c.id = uint_value(member(v, path, "id"), join(path, "id"));
   c.mean_count = number_field(v, path, "mean_count", Range::kNonNegative);
-  c.cnr = number_field(v, path, "cnr", Range::kPositive);
-  c.swerling = swerling(v, path);
+  if (!weibull) {
+    c.cnr = number_field(v, path, "cnr", Range::kPositive);
+    c.swerling = swerling(v, path);
+  }
   lifetime(v, path, c.birth_scan, c.death_scan);
   const auto it = v.find("variation");
   if (it != v.end()) {
@@ -240,8 +282,8 @@ void pretty(std::ostream& out, const json& v, int indent) {
 }  // namespace
 
 ScenarioSpec scenario_from_json(const json& doc) {
-  require_object(doc, "", {"schema", "name", "description", "scans", "scan_period_s", "region",
-                           "measurement_noise", "threshold", "evaluation", "targets", "clutter"});
+  require_object(doc, "", {"schema", "name", "description", "scans", "scan_period_s", "measurement_space",
+                           "region", "measurement_noise", "threshold", "evaluation", "targets", "clutter"});
   ScenarioSpec s;
   if (string_field(doc, "", "schema") != kScenarioSchema) {
     fail("schema", std::string("expected \"") + kScenarioSchema + "\"");
@@ -251,16 +293,34 @@ ScenarioSpec scenario_from_json(const json& doc) {
   s.num_scans = uint_value(member(doc, "", "scans"), "scans");
   s.scan_period_s = number_field(doc, "", "scan_period_s", Range::kPositive);
 
+  // Optional "measurement_space": "polar" (default, seed 000) | "cartesian" (seed 001).
+  if (doc.contains("measurement_space")) {
+    const std::string space = string_field(doc, "", "measurement_space");
+    if (space == "cartesian") {
+      s.space = scenario::MeasurementSpace::kCartesian;
+    } else if (space != "polar") {
+      fail("measurement_space", "expected \"polar\" or \"cartesian\"");
+    }
+  }
+  const bool cartesian = s.space == scenario::MeasurementSpace::kCartesian;
   const json& region = member(doc, "", "region");
-  require_object(region, "region", {"range_m", "azimuth_deg"});
-  const auto rr = number_array<2>(region, "region", "range_m");
-  const auto ra = number_array<2>(region, "region", "azimuth_deg");
-  s.region = scenario::Region{rr[0], rr[1], ra[0], ra[1]};
-
   const json& noise = member(doc, "", "measurement_noise");
-  require_object(noise, "measurement_noise", {"sigma_range_m", "sigma_azimuth_deg"});
-  s.sigma_range_m = number_field(noise, "measurement_noise", "sigma_range_m", Range::kPositive);
-  s.sigma_azimuth_deg = number_field(noise, "measurement_noise", "sigma_azimuth_deg", Range::kPositive);
+  if (cartesian) {
+    require_object(region, "region", {"x_m", "y_m"});
+    const auto rx = number_array<2>(region, "region", "x_m");
+    const auto ry = number_array<2>(region, "region", "y_m");
+    s.xy_region = scenario::CartesianRegion{rx[0], rx[1], ry[0], ry[1]};
+    require_object(noise, "measurement_noise", {"sigma_xy_m"});
+    s.sigma_xy_m = number_field(noise, "measurement_noise", "sigma_xy_m", Range::kPositive);
+  } else {
+    require_object(region, "region", {"range_m", "azimuth_deg"});
+    const auto rr = number_array<2>(region, "region", "range_m");
+    const auto ra = number_array<2>(region, "region", "azimuth_deg");
+    s.region = scenario::Region{rr[0], rr[1], ra[0], ra[1]};
+    require_object(noise, "measurement_noise", {"sigma_range_m", "sigma_azimuth_deg"});
+    s.sigma_range_m = number_field(noise, "measurement_noise", "sigma_range_m", Range::kPositive);
+    s.sigma_azimuth_deg = number_field(noise, "measurement_noise", "sigma_azimuth_deg", Range::kPositive);
+  }
   s.threshold = number_field(doc, "", "threshold", Range::kPositive);
 
   s.eval_first_scan = 1;
@@ -280,7 +340,7 @@ ScenarioSpec scenario_from_json(const json& doc) {
   const json& clut = member(doc, "", "clutter");
   if (!clut.is_array()) fail("clutter", "expected an array");
   for (std::size_t i = 0; i < clut.size(); ++i) {
-    s.clutter.push_back(clutter(clut[i], "clutter[" + std::to_string(i) + "]"));
+    s.clutter.push_back(clutter(clut[i], "clutter[" + std::to_string(i) + "]", cartesian));
   }
 
   const std::string error = scenario::validate(s);
@@ -295,9 +355,17 @@ json scenario_to_json(const ScenarioSpec& s) {
   doc["description"] = s.description;
   doc["scans"] = s.num_scans;
   doc["scan_period_s"] = s.scan_period_s;
-  doc["region"] = {{"range_m", {s.region.range_min_m, s.region.range_max_m}},
-                   {"azimuth_deg", {s.region.azimuth_min_deg, s.region.azimuth_max_deg}}};
-  doc["measurement_noise"] = {{"sigma_range_m", s.sigma_range_m}, {"sigma_azimuth_deg", s.sigma_azimuth_deg}};
+  const bool cartesian = s.space == scenario::MeasurementSpace::kCartesian;
+  if (cartesian) {
+    doc["measurement_space"] = "cartesian";
+    doc["region"] = {{"x_m", {s.xy_region.x_min_m, s.xy_region.x_max_m}},
+                     {"y_m", {s.xy_region.y_min_m, s.xy_region.y_max_m}}};
+    doc["measurement_noise"] = {{"sigma_xy_m", s.sigma_xy_m}};
+  } else {
+    doc["region"] = {{"range_m", {s.region.range_min_m, s.region.range_max_m}},
+                     {"azimuth_deg", {s.region.azimuth_min_deg, s.region.azimuth_max_deg}}};
+    doc["measurement_noise"] = {{"sigma_range_m", s.sigma_range_m}, {"sigma_azimuth_deg", s.sigma_azimuth_deg}};
+  }
   doc["threshold"] = s.threshold;
   doc["evaluation"] = {{"first_scan", s.eval_first_scan}, {"last_scan", s.eval_last_scan}};
   json targets = json::array();
@@ -334,14 +402,21 @@ json scenario_to_json(const ScenarioSpec& s) {
   json clut = json::array();
   for (const ClutterSpec& c : s.clutter) {
     json j = {{"id", c.id}, {"type", c.uniform ? "uniform" : "gaussian"}, {"mean_count", c.mean_count}};
-    if (!c.uniform) {
+    if (!c.uniform && cartesian) {
+      j["mean"] = {{"x_m", c.mean_x_m}, {"y_m", c.mean_y_m}};
+      j["spread"] = {{"sigma_x_m", c.sigma_x_m}, {"sigma_y_m", c.sigma_y_m}, {"correlation", c.correlation}};
+    } else if (!c.uniform) {
       j["mean"] = {{"range_m", c.mean_range_m}, {"azimuth_deg", c.mean_azimuth_deg}};
       j["spread"] = {{"sigma_range_m", c.sigma_range_m},
                      {"sigma_azimuth_deg", c.sigma_azimuth_deg},
                      {"correlation", c.correlation}};
     }
-    j["cnr"] = c.cnr;
-    j["swerling"] = static_cast<int>(c.swerling);
+    if (c.amplitude == scenario::ClutterAmplitude::kWeibull) {
+      j["amplitude"] = {{"model", "weibull"}, {"shape", c.weibull_shape}, {"scale", c.weibull_scale}};
+    } else {
+      j["cnr"] = c.cnr;
+      j["swerling"] = static_cast<int>(c.swerling);
+    }
     j["lifetime"] = lifetime_json(c.birth_scan, c.death_scan);
     const scenario::TimeVariation& v = c.variation;
     if (!(v == scenario::TimeVariation{})) {

@@ -67,6 +67,23 @@ std::string ellipse_path(const Frame& f, double mr, double ma, double crr, doubl
   return d.str();
 }
 
+// 2-sigma contour of a Cartesian Gaussian [m], drawn in km.
+std::string xy_ellipse_path(const Frame& f, double mx, double my, double cxx, double cxy, double cyy) {
+  const double l11 = std::sqrt(std::max(cxx, 0.0));
+  const double l21 = l11 > 0.0 ? cxy / l11 : 0.0;
+  const double l22 = std::sqrt(std::max(cyy - l21 * l21, 0.0));
+  std::ostringstream d;
+  constexpr int kPoints = 48;
+  for (int i = 0; i <= kPoints; ++i) {
+    double s = 0.0, c = 0.0;
+    dmath::dsincos(2.0 * scenario::kPi * i / kPoints, s, c);
+    const double x = mx + 2.0 * l11 * c;
+    const double y = my + 2.0 * (l21 * c + l22 * s);
+    d << (i == 0 ? "M" : "L") << f1(f.sx(x / 1000.0)) << ',' << f1(f.sy(y / 1000.0));
+  }
+  return d.str();
+}
+
 }  // namespace
 
 void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
@@ -86,12 +103,20 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
   const double a1 = scenario::deg_to_rad(reg.azimuth_max_deg);
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
   std::vector<std::pair<double, double>> outline;
-  for (int i = 0; i <= 40; ++i) {
+  const bool cartesian = spec.space == scenario::MeasurementSpace::kCartesian;
+  if (cartesian) {  // seed 001: the x/y box
+    const scenario::CartesianRegion& q = spec.xy_region;
+    outline = {{q.x_min_m / 1000.0, q.y_min_m / 1000.0},
+               {q.x_max_m / 1000.0, q.y_min_m / 1000.0},
+               {q.x_max_m / 1000.0, q.y_max_m / 1000.0},
+               {q.x_min_m / 1000.0, q.y_max_m / 1000.0}};
+  }
+  for (int i = 0; i <= 40 && !cartesian; ++i) {
     double x = 0.0, y = 0.0;
     polar_to_xy(reg.range_max_m, a0 + (a1 - a0) * i / 40.0, x, y);
     outline.emplace_back(x / 1000.0, y / 1000.0);
   }
-  for (int i = 40; i >= 0; --i) {
+  for (int i = 40; i >= 0 && !cartesian; --i) {
     double x = 0.0, y = 0.0;
     polar_to_xy(reg.range_min_m, a0 + (a1 - a0) * i / 40.0, x, y);
     outline.emplace_back(x / 1000.0, y / 1000.0);
@@ -121,15 +146,20 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
     const std::uint32_t mid = (c.birth_scan + c.death_scan) / 2;
     const scenario::ClutterAtScan p = scenario::clutter_at_scan(spec, c, mid);
     out << "<path fill=\"none\" stroke=\"#555\" stroke-dasharray=\"5,3\" d=\""
-        << ellipse_path(xy, p.mean_range_m, p.mean_azimuth_rad, p.cov_rr, p.cov_ra, p.cov_aa) << "\"/>\n";
+        << (cartesian ? xy_ellipse_path(xy, p.mean_x_m, p.mean_y_m, p.cov_xx, p.cov_xy, p.cov_yy)
+                      : ellipse_path(xy, p.mean_range_m, p.mean_azimuth_rad, p.cov_rr, p.cov_ra, p.cov_aa))
+        << "\"/>\n";
   }
   // Estimated non-uniform clutter, every 10th scan (orange).
   for (const EstimateOut& e : estimates) {
     if (e.scan % 10 != 0) continue;
     for (const ClutterOut& c : e.clutter) {
       if (c.uniform) continue;
+      // Cartesian filters report (x, y) [m] in the (range, azimuth) slots.
       out << "<path fill=\"none\" stroke=\"#ff7f0e\" stroke-opacity=\"0.6\" d=\""
-          << ellipse_path(xy, c.mean_range_m, c.mean_azimuth_rad, c.cov_rr, c.cov_ra, c.cov_aa) << "\"/>\n";
+          << (cartesian ? xy_ellipse_path(xy, c.mean_range_m, c.mean_azimuth_rad, c.cov_rr, c.cov_ra, c.cov_aa)
+                        : ellipse_path(xy, c.mean_range_m, c.mean_azimuth_rad, c.cov_rr, c.cov_ra, c.cov_aa))
+          << "\"/>\n";
     }
   }
   // Truth trajectories.
@@ -173,7 +203,60 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
   }
   out << "<text x=\"900\" y=\"545\" text-anchor=\"middle\">scan (1 .. " << ospa_per_scan.size()
       << "); shaded: evaluation interval</text>\n"
-      << "<text x=\"650\" y=\"68\">OSPA [m] (p = 2, c = 631 m), mean over runs</text>\n</svg>\n";
+      << "<text x=\"650\" y=\"68\">OSPA [m] (p = 2, c = 631 m, the run's metric), mean over runs</text>\n</svg>\n";
+  if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+void write_ospa_comparison_svg(const std::string& path, const std::string& title,
+                               const std::vector<OspaSeries>& series, std::uint32_t eval_first_scan,
+                               std::uint32_t eval_last_scan, double order_p, double cutoff_m) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write");
+  constexpr double kW = 1000, kH = 560;
+  std::size_t scans = 1;
+  double omax = 1.0;
+  for (const OspaSeries& s : series) {
+    scans = std::max(scans, s.ospa_per_scan.size());
+    for (double v : s.ospa_per_scan) omax = std::max(omax, v);
+  }
+  const double top = std::min(omax * 1.05, cutoff_m * 1.05);  // OSPA never exceeds c
+  const Frame os{1.0, std::max(static_cast<double>(scans), 2.0), 0.0, top, 70, 50, 680, 450};
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kW << "\" height=\"" << kH
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"20\" y=\"24\" font-size=\"15\">" << escape(title) << "</text>\n";
+  out << "<rect x=\"" << f1(os.sx(eval_first_scan)) << "\" y=\"50\" width=\""
+      << f1(os.sx(eval_last_scan) - os.sx(eval_first_scan)) << "\" height=\"450\" fill=\"#e8f0ff\"/>\n";
+  out << "<rect x=\"70\" y=\"50\" width=\"680\" height=\"450\" fill=\"none\" stroke=\"#888\"/>\n";
+  for (int i = 0; i <= 5; ++i) {
+    const double v = top * i / 5.0;
+    out << "<line x1=\"70\" x2=\"750\" y1=\"" << f1(os.sy(v)) << "\" y2=\"" << f1(os.sy(v))
+        << "\" stroke=\"#ddd\"/>\n<text x=\"64\" y=\"" << f1(os.sy(v) + 4) << "\" text-anchor=\"end\">" << f1(v)
+        << "</text>\n";
+  }
+  for (int i = 0; i <= 5; ++i) {
+    const double k = 1.0 + (os.x1 - 1.0) * i / 5.0;
+    out << "<text x=\"" << f1(os.sx(k)) << "\" y=\"516\" text-anchor=\"middle\">" << f1(k) << "</text>\n";
+  }
+  for (std::size_t t = 0; t < series.size(); ++t) {
+    const char* colour = kPalette[t % 10];
+    const char* dash = t >= 10 ? " stroke-dasharray=\"6,3\"" : "";
+    out << "<path fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.6\"" << dash << " d=\"";
+    const std::vector<double>& v = series[t].ospa_per_scan;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      out << (i == 0 ? "M" : "L") << f1(os.sx(static_cast<double>(i + 1))) << ',' << f1(os.sy(v[i]));
+    }
+    out << "\"/>\n";
+    const double ly = 66.0 + 18.0 * static_cast<double>(t);
+    out << "<line x1=\"770\" x2=\"800\" y1=\"" << f1(ly) << "\" y2=\"" << f1(ly) << "\" stroke=\"" << colour
+        << "\" stroke-width=\"2\"" << dash << "/>\n<text x=\"806\" y=\"" << f1(ly + 4) << "\">"
+        << escape(series[t].name) << "</text>\n";
+  }
+  char axis[128];
+  std::snprintf(axis, sizeof axis, "OSPA [m] (p = %g, c = %g m)", order_p, cutoff_m);
+  out << "<text x=\"410\" y=\"540\" text-anchor=\"middle\">scan; shaded: evaluation interval</text>\n"
+      << "<text x=\"18\" y=\"275\" transform=\"rotate(-90 18 275)\" text-anchor=\"middle\">" << axis
+      << "</text>\n</svg>\n";
   if (!out) throw std::runtime_error(path + ": write failed");
 }
 

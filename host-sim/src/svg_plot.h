@@ -4,6 +4,7 @@
 // with the evaluation interval shaded. Plain SVG 1.1, no dependencies.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,5 +16,17 @@ namespace mptrack::sim {
 void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
                     const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& estimates,
                     const std::vector<double>& ospa_per_scan, const std::string& title);
+
+/// One line of the comparison plot: a tracker's mean OSPA per scan [m].
+struct OspaSeries {
+  std::string name;
+  std::vector<double> ospa_per_scan;  ///< index scan-1
+};
+
+/// ospa.svg of `mptrack-sim compare`: OSPA over scans, one coloured line per
+/// tracker with a legend, the evaluation interval shaded.
+void write_ospa_comparison_svg(const std::string& path, const std::string& title,
+                               const std::vector<OspaSeries>& series, std::uint32_t eval_first_scan,
+                               std::uint32_t eval_last_scan, double order_p, double cutoff_m);
 
 }  // namespace mptrack::sim

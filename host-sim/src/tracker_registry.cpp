@@ -1,6 +1,18 @@
 // Tracker registry; see tracker_registry.h.
 #include "tracker_registry.h"
 
+#include "mptrack/caps.h"
+#if MPTRACK_SIM_HAVE_MFBP
+#include "mptrack/mfbp/mfbp_tracker.h"
+#endif
+#if MPTRACK_SIM_HAVE_GNN
+#include "mptrack/gnn/gnn_tracker.h"
+#endif
+#if MPTRACK_SIM_HAVE_IGGM
+#include "mptrack/cbmember/cbmember_filter.h"
+#include "mptrack/phd/phd_filter.h"
+#endif
+
 namespace mptrack::sim {
 
 namespace {
@@ -41,6 +53,27 @@ constexpr Entry kEntries[] = {
 std::vector<TrackerInfo> tracker_list() {
   std::vector<TrackerInfo> out;
   for (const Entry& e : kEntries) out.push_back(TrackerInfo{e.name, e.description, e.available});
+  return out;
+}
+
+std::vector<TrackerFootprint> tracker_footprints() {
+  std::vector<TrackerFootprint> out;
+#if MPTRACK_SIM_HAVE_MFBP
+  out.push_back({"MfbpTracker<T, DefaultCaps>", sizeof(MfbpTracker<float, DefaultCaps>),
+                 sizeof(MfbpTracker<double, DefaultCaps>)});
+#endif
+#if MPTRACK_SIM_HAVE_GNN
+  out.push_back({"GnnTracker<T, DefaultCaps>", sizeof(GnnTracker<float, DefaultCaps>),
+                 sizeof(GnnTracker<double, DefaultCaps>)});
+#endif
+#if MPTRACK_SIM_HAVE_IGGM
+  out.push_back({"phd::GmPhdFilter<T, DefaultCaps>", sizeof(phd::GmPhdFilter<float, DefaultCaps>),
+                 sizeof(phd::GmPhdFilter<double, DefaultCaps>)});
+  out.push_back({"phd::GmCphdFilter<T, DefaultCaps>", sizeof(phd::GmCphdFilter<float, DefaultCaps>),
+                 sizeof(phd::GmCphdFilter<double, DefaultCaps>)});
+  out.push_back({"cbmember::CbMemberFilter<T, DefaultCaps>", sizeof(cbmember::CbMemberFilter<float, DefaultCaps>),
+                 sizeof(cbmember::CbMemberFilter<double, DefaultCaps>)});
+#endif
   return out;
 }
 

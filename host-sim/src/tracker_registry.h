@@ -2,6 +2,7 @@
 // build are listed as unavailable (so --help can say why).
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,15 @@ struct TrackerInfo {
 
 /// Every registered name, in --help order.
 std::vector<TrackerInfo> tracker_list();
+
+/// sizeof of a core tracker object for DefaultCaps (what a board must place).
+struct TrackerFootprint {
+  std::string name;           ///< core type, e.g. "MfbpTracker<T, DefaultCaps>"
+  std::size_t bytes_float = 0;
+  std::size_t bytes_double = 0;
+};
+/// The core trackers built into this tree.
+std::vector<TrackerFootprint> tracker_footprints();
 
 /// A fresh adapter, or nullptr with `error` set (unknown or not built).
 std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::string& error);

@@ -86,7 +86,14 @@ ClutterAtScan clutter_at_scan(const ScenarioSpec& spec, const ClutterSpec& c, st
   if (v.count_sin_amplitude != 0.0) count_scale += v.count_sin_amplitude * dmath::dsin(kPi * f);
   out.mean_count = c.mean_count * count_scale;
   out.cnr = c.cnr;
-  if (!c.uniform) {
+  if (!c.uniform && spec.space == MeasurementSpace::kCartesian) {
+    const double cov_scale = v.cov_scale_start + (v.cov_scale_end - v.cov_scale_start) * f;
+    out.cov_xx = cov_scale * c.sigma_x_m * c.sigma_x_m;
+    out.cov_xy = cov_scale * c.correlation * c.sigma_x_m * c.sigma_y_m;
+    out.cov_yy = cov_scale * c.sigma_y_m * c.sigma_y_m;
+    out.mean_x_m = c.mean_x_m;
+    out.mean_y_m = c.mean_y_m;
+  } else if (!c.uniform) {
     const double cov_scale = v.cov_scale_start + (v.cov_scale_end - v.cov_scale_start) * f;
     const double sr = c.sigma_range_m;
     const double sa = deg_to_rad(c.sigma_azimuth_deg);
@@ -128,8 +135,20 @@ Status Generator::generate(std::uint32_t k, SimScan& out) const {
   const Region& reg = spec_.region;
   const double az_min = deg_to_rad(reg.azimuth_min_deg);
   const double az_max = deg_to_rad(reg.azimuth_max_deg);
+  const bool cartesian = spec_.space == MeasurementSpace::kCartesian;
+  const CartesianRegion& box = spec_.xy_region;
   const auto inside = [&](double r, double az) {
     return r >= reg.range_min_m && r <= reg.range_max_m && az >= az_min && az <= az_max;
+  };
+  const auto inside_xy = [&](double x, double y) {
+    return x >= box.x_min_m && x <= box.x_max_m && y >= box.y_min_m && y <= box.y_max_m;
+  };
+  // A Cartesian point as the tracker receives it: (range, azimuth) of (x, y).
+  const auto set_xy = [](SimMeasurement& m, double x, double y) {
+    m.x_m = x;
+    m.y_m = y;
+    m.range_m = std::sqrt(x * x + y * y);
+    m.azimuth_rad = dmath::datan2(y, x);
   };
   const double d2 = spec_.threshold * spec_.threshold;
   const double sigma_az = deg_to_rad(spec_.sigma_azimuth_deg);
@@ -145,7 +164,20 @@ Status Generator::generate(std::uint32_t k, SimScan& out) const {
     const int n = swerling_shape(tgt.swerling);
     const double power = rng.gamma_int(n, (1.0 + tgt.snr) / static_cast<double>(n));
     truth.detected = power > d2;
-    if (truth.detected) {
+    if (truth.detected && cartesian) {
+      SimMeasurement m;
+      const double x = truth.x.px + spec_.sigma_xy_m * rng.normal();
+      const double y = truth.x.py + spec_.sigma_xy_m * rng.normal();
+      set_xy(m, x, y);
+      m.amplitude = std::sqrt(power);
+      m.origin = Origin{OriginKind::kTarget, tgt.id};
+      truth.in_region = inside_xy(x, y);
+      if (truth.in_region) {
+        out.measurements.push_back(m);
+      } else {
+        ++out.dropped_outside_region;
+      }
+    } else if (truth.detected) {
       const double r0 = std::sqrt(truth.x.px * truth.x.px + truth.x.py * truth.x.py);
       const double az0 = dmath::datan2(truth.x.py, truth.x.px);
       SimMeasurement m;
@@ -175,8 +207,37 @@ Status Generator::generate(std::uint32_t k, SimScan& out) const {
     const double l21 = l11 > 0.0 ? p.cov_ra / l11 : 0.0;
     const double l22_sq = p.cov_aa - l21 * l21;
     const double l22 = l22_sq > 0.0 ? std::sqrt(l22_sq) : 0.0;
+    // Cholesky factor of the Cartesian covariance (zero when polar or uniform).
+    const double c11 = std::sqrt(p.cov_xx);
+    const double c21 = c11 > 0.0 ? p.cov_xy / c11 : 0.0;
+    const double c22_sq = p.cov_yy - c21 * c21;
+    const double c22 = c22_sq > 0.0 ? std::sqrt(c22_sq) : 0.0;
     for (std::uint32_t i = 0; i < count; ++i) {
       SimMeasurement m;
+      if (cartesian) {
+        double x = 0.0;
+        double y = 0.0;
+        if (c.uniform) {
+          x = box.x_min_m + (box.x_max_m - box.x_min_m) * rng.uniform();
+          y = box.y_min_m + (box.y_max_m - box.y_min_m) * rng.uniform();
+        } else {
+          const double z1 = rng.normal();
+          const double z2 = rng.normal();
+          x = p.mean_x_m + c11 * z1;
+          y = p.mean_y_m + c21 * z1 + c22 * z2;
+        }
+        set_xy(m, x, y);
+        m.amplitude = c.amplitude == ClutterAmplitude::kWeibull
+                          ? rng.weibull_above(c.weibull_shape, c.weibull_scale, spec_.threshold)
+                          : std::sqrt(rng.gamma_int_above(n, scale, d2));
+        m.origin = Origin{OriginKind::kClutter, c.id};
+        if (inside_xy(x, y)) {
+          out.measurements.push_back(m);
+        } else {
+          ++out.dropped_outside_region;
+        }
+        continue;
+      }
       if (c.uniform) {
         m.range_m = reg.range_min_m + (reg.range_max_m - reg.range_min_m) * rng.uniform();
         m.azimuth_rad = az_min + (az_max - az_min) * rng.uniform();
@@ -186,7 +247,9 @@ Status Generator::generate(std::uint32_t k, SimScan& out) const {
         m.range_m = p.mean_range_m + l11 * z1;
         m.azimuth_rad = p.mean_azimuth_rad + l21 * z1 + l22 * z2;
       }
-      m.amplitude = std::sqrt(rng.gamma_int_above(n, scale, d2));
+      m.amplitude = c.amplitude == ClutterAmplitude::kWeibull
+                        ? rng.weibull_above(c.weibull_shape, c.weibull_scale, spec_.threshold)
+                        : std::sqrt(rng.gamma_int_above(n, scale, d2));
       m.origin = Origin{OriginKind::kClutter, c.id};
       if (inside(m.range_m, m.azimuth_rad)) {
         out.measurements.push_back(m);

@@ -48,6 +48,16 @@ std::string validate(const ScenarioSpec& s) {
   if (s.eval_first_scan < 1 || s.eval_first_scan > s.eval_last_scan || s.eval_last_scan > s.num_scans) {
     return "evaluation: expected 1 <= first_scan <= last_scan <= scans";
   }
+  if (s.space == MeasurementSpace::kCartesian) {
+    const CartesianRegion& q = s.xy_region;
+    if (!finite(q.x_min_m) || !finite(q.x_max_m) || !(q.x_max_m > q.x_min_m)) {
+      return "region.x_m: expected [min, max] with min < max";
+    }
+    if (!finite(q.y_min_m) || !finite(q.y_max_m) || !(q.y_max_m > q.y_min_m)) {
+      return "region.y_m: expected [min, max] with min < max";
+    }
+    if (!positive(s.sigma_xy_m)) return "measurement_noise.sigma_xy_m: expected a positive number";
+  }
   for (std::size_t i = 0; i < s.targets.size(); ++i) {
     const TargetSpec& t = s.targets[i];
     if (t.id < 1) return at("targets", i, "id") + ": expected a positive integer";
@@ -88,7 +98,26 @@ std::string validate(const ScenarioSpec& s) {
     if (!finite(v.count_sin_amplitude) || v.count_sin_amplitude < -1.0) {
       return at("clutter", i, "variation.count_sin_amplitude") + ": expected a number >= -1";
     }
-    if (!c.uniform) {
+    if (c.amplitude == ClutterAmplitude::kWeibull) {
+      if (!finite(c.weibull_shape) || c.weibull_shape < 0.1 || c.weibull_shape > 5.0) {
+        return at("clutter", i, "amplitude.shape") + ": expected a number in [0.1, 5]";
+      }
+      if (!positive(c.weibull_scale)) return at("clutter", i, "amplitude.scale") + ": expected a positive number";
+    }
+    if (!c.uniform && s.space == MeasurementSpace::kCartesian) {
+      if (!finite(c.mean_x_m) || !finite(c.mean_y_m)) return at("clutter", i, "mean") + ": expected finite x_m, y_m";
+      if (!positive(c.sigma_x_m)) return at("clutter", i, "spread.sigma_x_m") + ": expected a positive number";
+      if (!positive(c.sigma_y_m)) return at("clutter", i, "spread.sigma_y_m") + ": expected a positive number";
+      if (!finite(c.correlation) || !(c.correlation > -1.0 && c.correlation < 1.0)) {
+        return at("clutter", i, "spread.correlation") + ": expected a number in (-1, 1)";
+      }
+      if (!positive(v.cov_scale_start) || !positive(v.cov_scale_end)) {
+        return at("clutter", i, "variation.cov_scale") + ": expected positive numbers";
+      }
+      if (v.drift_range_mps != 0.0 || v.drift_azimuth_deg_s != 0.0) {
+        return at("clutter", i, "variation.drift") + ": polar drift is not supported in a Cartesian scenario";
+      }
+    } else if (!c.uniform) {
       if (!finite(c.mean_range_m)) return at("clutter", i, "mean.range_m") + ": expected a finite number";
       if (!finite(c.mean_azimuth_deg)) return at("clutter", i, "mean.azimuth_deg") + ": expected a finite number";
       if (!positive(c.sigma_range_m)) return at("clutter", i, "spread.sigma_range_m") + ": expected a positive number";
@@ -129,7 +158,14 @@ bool operator==(const ClutterSpec& a, const ClutterSpec& b) {
          a.mean_range_m == b.mean_range_m && a.mean_azimuth_deg == b.mean_azimuth_deg &&
          a.sigma_range_m == b.sigma_range_m && a.sigma_azimuth_deg == b.sigma_azimuth_deg &&
          a.correlation == b.correlation && a.cnr == b.cnr && a.swerling == b.swerling &&
-         a.birth_scan == b.birth_scan && a.death_scan == b.death_scan && a.variation == b.variation;
+         a.birth_scan == b.birth_scan && a.death_scan == b.death_scan && a.variation == b.variation &&
+         a.mean_x_m == b.mean_x_m && a.mean_y_m == b.mean_y_m && a.sigma_x_m == b.sigma_x_m &&
+         a.sigma_y_m == b.sigma_y_m && a.amplitude == b.amplitude && a.weibull_shape == b.weibull_shape &&
+         a.weibull_scale == b.weibull_scale;
+}
+
+bool operator==(const CartesianRegion& a, const CartesianRegion& b) {
+  return a.x_min_m == b.x_min_m && a.x_max_m == b.x_max_m && a.y_min_m == b.y_min_m && a.y_max_m == b.y_max_m;
 }
 
 bool operator==(const Region& a, const Region& b) {
@@ -142,7 +178,8 @@ bool operator==(const ScenarioSpec& a, const ScenarioSpec& b) {
          a.scan_period_s == b.scan_period_s && a.region == b.region && a.sigma_range_m == b.sigma_range_m &&
          a.sigma_azimuth_deg == b.sigma_azimuth_deg && a.threshold == b.threshold &&
          a.eval_first_scan == b.eval_first_scan && a.eval_last_scan == b.eval_last_scan &&
-         a.targets == b.targets && a.clutter == b.clutter;
+         a.targets == b.targets && a.clutter == b.clutter && a.space == b.space && a.xy_region == b.xy_region &&
+         a.sigma_xy_m == b.sigma_xy_m;
 }
 
 }  // namespace mptrack::scenario

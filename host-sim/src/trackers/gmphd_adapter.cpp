@@ -10,6 +10,7 @@
 #include <string>
 
 #include "mptrack/cbmember/cbmember_filter.h"
+#include "mptrack/math/detmath.h"
 #include "mptrack/phd/phd_filter.h"
 #include "trackers/core_adapter.h"
 #include "tracker_registry.h"
@@ -65,6 +66,50 @@ phd::FilterParams<double> params_for(const TrackerSetup& setup, const std::strin
   return p;
 }
 
+/// Filter params for a Cartesian (seed 001) scenario [compare engineer,
+/// additive]: the spec 6 models (CV sigma_nu 5 m/s^2, R = sigma_xy^2 I), the
+/// scenario's threshold, Swerling case and clutter amplitude law (b, sigma0),
+/// and as the known / prior clutter rate the scenario's total mean count
+/// spread uniformly (the fixed model knows the rate, never the hot spots).
+phd::FilterParams<double> cartesian_params_for(const TrackerSetup& setup, const std::string& variant) {
+  const scenario::ScenarioSpec& s = setup.spec;
+  phd::FilterParams<double> p;
+  p.space = phd::MeasurementSpace::kCartesian;
+  p.sigma_r_m = s.sigma_xy_m;
+  p.region_min0 = s.xy_region.x_min_m;
+  p.region_max0 = s.xy_region.x_max_m;
+  p.region_min1 = s.xy_region.y_min_m;
+  p.region_max1 = s.xy_region.y_max_m;
+  p.scan_period_s = s.scan_period_s;
+  p.threshold = s.threshold;
+  p.swerling_order = scenario_swerling(s) == 3 ? 2 : 1;
+  double snr = 0.0;
+  for (const auto& t : s.targets) snr += t.snr;
+  const double mean_snr = s.targets.empty() ? 100.0 : snr / static_cast<double>(s.targets.size());
+  p.target_power_prior = 1.0 + mean_snr;
+  // -ki: P_D of a Swerling I target at the mean SNR, exp(-d^2 / (1 + snr)) (seed 001 spec 3.3).
+  p.detection_prob = dmath::dexp(-s.threshold * s.threshold / (1.0 + mean_snr));
+  double rate = 0.0;
+  for (const auto& c : s.clutter) rate += c.mean_count * setup.clutter_scale;
+  p.clutter_rate = rate > 0.0 ? rate : 1.0;
+  p.weibull_shape = 1.0;
+  p.clutter_scale = 2.0;  // Rayleigh of CNR 1 when the scenario says nothing
+  for (const auto& c : s.clutter) {
+    if (c.amplitude == scenario::ClutterAmplitude::kWeibull) {
+      p.weibull_shape = c.weibull_shape;
+      p.clutter_scale = c.weibull_scale;
+    } else {
+      p.clutter_scale = 1.0 + c.cnr;
+    }
+    break;
+  }
+  p.clutter_mode = phd::ClutterMode::kEstimatedMap;
+  if (variant == "uniform") p.clutter_mode = phd::ClutterMode::kEstimatedUniform;
+  if (variant == "known") p.clutter_mode = phd::ClutterMode::kKnownUniform;
+  if (variant == "ki") p.use_amplitude = false;
+  return p;
+}
+
 template <class Filter>
 class IggmAdapter final : public CoreTrackerAdapter<Filter> {
  public:
@@ -72,6 +117,9 @@ class IggmAdapter final : public CoreTrackerAdapter<Filter> {
   std::string init(const TrackerSetup& setup) override {
     if (!variant_.empty() && variant_ != "uniform" && variant_ != "known" && variant_ != "ki") {
       return "unknown IGGM variant '" + variant_ + "'";
+    }
+    if (setup.spec.space == scenario::MeasurementSpace::kCartesian) {
+      return this->init_tracker(cartesian_params_for(setup, variant_));
     }
     return this->init_tracker(params_for(setup, variant_));
   }

@@ -11,7 +11,8 @@
 
 namespace mptrack::scenario {
 
-/// Names accepted by builtin_scenario(): seed000-s1, seed000-s2, seed000-s3.
+/// Names accepted by builtin_scenario(): seed000-s1..s3 (polar, seed 000) and
+/// seed001-s1..s5 (Cartesian, seed 001 section 6).
 std::vector<std::string> builtin_scenario_names();
 
 /// The named built-in scenario; false if the name is unknown.

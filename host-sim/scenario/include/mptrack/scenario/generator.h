@@ -11,6 +11,11 @@
 //      space) and m = sqrt(u) with u ~ Gamma(n, (1+cnr)/n) given u > d^2;
 //   3. points outside the region are dropped (counted);
 //   4. a Fisher-Yates shuffle, so measurement order carries no information.
+// Cartesian scenarios (seed 001) draw the same way with y = (px, py) +
+// N(0, sigma_xy^2 I), clutter uniform over the x/y box or N(mean, cov) in
+// x/y, and deliver each point as (range, azimuth) = (|y|, atan2). Clutter
+// with a Weibull amplitude (seed 001 spec 3.4) draws a^(2b) = d^(2b) +
+// sigma0 E, E ~ Exp(1): the exact law given a > d (memorylessness).
 #pragma once
 
 #include <cstddef>
@@ -57,6 +62,12 @@ struct ClutterAtScan {
   double cov_ra = 0.0;        ///< [m rad]
   double cov_aa = 0.0;        ///< [rad^2]
   double cnr = 0.0;
+  // Cartesian scenarios (seed 001), Gaussian components only:
+  double mean_x_m = 0.0;
+  double mean_y_m = 0.0;
+  double cov_xx = 0.0;        ///< [m^2]
+  double cov_xy = 0.0;        ///< [m^2]
+  double cov_yy = 0.0;        ///< [m^2]
 };
 ClutterAtScan clutter_at_scan(const ScenarioSpec& spec, const ClutterSpec& c, std::uint32_t k);
 
@@ -73,6 +84,8 @@ struct SimMeasurement {
   double azimuth_rad = 0.0;
   double amplitude = 0.0;  ///< sqrt(power / N0)
   Origin origin;
+  double x_m = 0.0;        ///< Cartesian scenarios: the drawn position (range/azimuth are its polar form) [m]
+  double y_m = 0.0;
 };
 
 struct TruthState {

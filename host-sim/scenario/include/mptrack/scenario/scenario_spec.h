@@ -21,6 +21,28 @@ enum class Swerling : std::uint8_t { kOne = 1, kThree = 3 };
 /// Gamma shape n of a Swerling case (spec 2.4: n = 1 for I, n = 2 for III).
 constexpr int swerling_shape(Swerling s) { return s == Swerling::kThree ? 2 : 1; }
 
+/// Where measurements live. Seed 000 is polar (range, azimuth); seed 001
+/// (spec section 2) is a Cartesian position sensor: z = (x, y) + N(0, sigma^2 I).
+/// A Cartesian measurement is still delivered in the polar fields of
+/// mptrack::Measurement (range = |z|, azimuth = atan2(y, x)); the trackers
+/// that model a Cartesian sensor convert it back (phd/measurement_model.h).
+enum class MeasurementSpace : std::uint8_t { kPolar, kCartesian };
+
+/// Surveillance region of a Cartesian scenario [m] (seed 001 section 6:
+/// [-1000, 1000]^2).
+struct CartesianRegion {
+  double x_min_m = -1000.0;
+  double x_max_m = 1000.0;
+  double y_min_m = -1000.0;
+  double y_max_m = 1000.0;
+};
+
+/// Clutter amplitude law. kSwerling: power u ~ Gamma(n, (1 + cnr) / n) given
+/// u > d^2 (seed 000 spec 4.2). kWeibull: seed 001 spec 3.4 (P41-P44),
+/// p(a) = (2b / sigma0) a^(2b-1) exp(-a^(2b) / sigma0), given a > d; b = 1,
+/// sigma0 = 1 is Rayleigh noise of unit power (normalised amplitudes).
+enum class ClutterAmplitude : std::uint8_t { kSwerling, kWeibull };
+
 /// Search region in measurement (polar) space, spec 4.1 / A20.
 struct Region {
   double range_min_m = 10000.0;
@@ -88,6 +110,14 @@ struct ClutterSpec {
   std::uint32_t birth_scan = 1;
   std::uint32_t death_scan = 1;
   TimeVariation variation;
+  // --- additions for Cartesian scenarios and Weibull clutter (seed 001) ---
+  double mean_x_m = 0.0;                     ///< Cartesian Gaussian only: mean x [m]
+  double mean_y_m = 0.0;                     ///< Cartesian Gaussian only: mean y [m]
+  double sigma_x_m = 0.0;                    ///< Cartesian Gaussian only: std along x [m] (correlation shared)
+  double sigma_y_m = 0.0;                    ///< Cartesian Gaussian only: std along y [m]
+  ClutterAmplitude amplitude = ClutterAmplitude::kSwerling;
+  double weibull_shape = 1.0;                ///< kWeibull: b [-] (seed 001: 0.8; 1 = Rayleigh)
+  double weibull_scale = 1.0;                ///< kWeibull: sigma0, normalised amplitude units [-]
 };
 
 struct ScenarioSpec {
@@ -103,6 +133,10 @@ struct ScenarioSpec {
   std::uint32_t eval_last_scan = 1;
   std::vector<TargetSpec> targets;
   std::vector<ClutterSpec> clutter;
+  // --- additions for Cartesian scenarios (seed 001); unused when polar ---
+  MeasurementSpace space = MeasurementSpace::kPolar;
+  CartesianRegion xy_region;                 ///< Cartesian: surveillance region [m]
+  double sigma_xy_m = 10.0;                  ///< Cartesian: position noise std per axis [m] (seed 001: 10)
 };
 
 /// Semantic checks (ranges, lifetimes, unique ids). Returns "" when valid,
@@ -116,6 +150,7 @@ bool operator==(const TargetSpec& a, const TargetSpec& b);
 bool operator==(const TimeVariation& a, const TimeVariation& b);
 bool operator==(const ClutterSpec& a, const ClutterSpec& b);
 bool operator==(const Region& a, const Region& b);
+bool operator==(const CartesianRegion& a, const CartesianRegion& b);
 bool operator==(const ScenarioSpec& a, const ScenarioSpec& b);
 inline bool operator!=(const ScenarioSpec& a, const ScenarioSpec& b) { return !(a == b); }
 

@@ -1,0 +1,99 @@
+// `mptrack-sim compare`: every selected tracker on identical measurement
+// sets, side by side (issue "Baselines with amplitude information", seed 001).
+//
+// Per run r the scans are generated ONCE (stream derive_seed(seed, r, k)) and
+// the same SimScan objects are fed to every tracker, so the trackers cannot
+// see different data; a 64-bit checksum of every measurement handed to each
+// tracker is kept per tracker to prove it (all rows must carry the same one).
+//
+// Metrics per evaluation scan, averaged over runs x evaluation scans:
+// OSPA, GOSPA and its three components (localisation / missed / false, in
+// m^p, mean GOSPA^p = loc + missed + false), cardinality error |#confirmed -
+// #truths|, NFT (confirmed tracks with no truth within c), and the wall time
+// of each step() (p50/p99/max over all scans of all runs).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "mptrack/scenario/generator.h"
+#include "mptrack/scenario/scenario_spec.h"
+#include "runner.h"
+
+namespace mptrack::sim {
+
+struct CompareConfig {
+  scenario::ScenarioSpec spec;
+  std::vector<std::string> trackers;  ///< empty = default_compare_trackers(spec)
+  std::uint32_t runs = 1;
+  std::uint64_t seed = 1;
+  double clutter_scale = 1.0;
+  double ospa_cutoff_m = 0.0;         ///< c [m]; 0 = the scenario's (see default_ospa())
+  double ospa_order = 0.0;            ///< p; 0 = the scenario's
+  std::string out_dir;                ///< "" = write nothing
+  bool plot = true;                   ///< DIR/ospa.svg
+  bool progress = true;
+};
+
+/// One tracker's row of the table.
+struct CompareRow {
+  std::string tracker;
+  double mean_ospa = 0.0;             ///< [m]
+  double mean_gospa = 0.0;            ///< [m]
+  double gospa_localisation = 0.0;    ///< mean per scan [m^p]
+  double gospa_missed = 0.0;          ///< mean per scan [m^p] = c^p/2 x missed
+  double gospa_false = 0.0;           ///< mean per scan [m^p] = c^p/2 x false
+  double missed_per_scan = 0.0;       ///< GOSPA unassigned truths per scan
+  double false_per_scan = 0.0;        ///< GOSPA unassigned estimates per scan
+  double cardinality_error = 0.0;     ///< mean |#confirmed - #truths| per scan
+  double nft = 0.0;                   ///< confirmed tracks without a truth within c, per scan
+  double mean_confirmed = 0.0;        ///< confirmed tracks per scan
+  LatencyStats latency;               ///< step() wall time [us]
+  std::uint64_t step_errors = 0;      ///< steps returning anything but kOk/kPartial/kCapacityExceeded
+  std::uint64_t steps_not_ok = 0;     ///< steps returning anything but kOk
+  std::uint64_t measurement_checksum = 0;  ///< of every measurement this tracker was given
+  std::vector<double> ospa_per_scan;  ///< mean over runs, index scan-1 [m]
+};
+
+struct CompareResult {
+  std::string scenario;
+  std::uint32_t runs = 0, scans = 0;
+  std::uint64_t seed = 0;
+  double clutter_scale = 1.0;
+  double ospa_cutoff_m = 0.0, ospa_order = 0.0;
+  std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
+  double mean_measurements = 0.0;     ///< per scan
+  double mean_truths = 0.0;           ///< per evaluation scan
+  std::vector<CompareRow> rows;       ///< in tracker order
+};
+
+/// OSPA/GOSPA (c, p) of a scenario: seed 001 (Cartesian) c = 300 m, p = 1
+/// (seed 001 section 6); otherwise seed 000 spec 5.1, c = 631 m, p = 2.
+void default_ospa(const scenario::ScenarioSpec& spec, double& cutoff_m, double& order);
+
+/// Default tracker list: the built trackers among mfbp, mfbp-filter, gmphd,
+/// gmcphd, cbmember (+ their -known fixed-clutter variants), gnn. Cartesian
+/// scenarios: only the IGGM filters (estimated vs known clutter), since
+/// MF-BP and GNN model a polar sensor.
+std::vector<std::string> default_compare_trackers(const scenario::ScenarioSpec& spec);
+
+/// "a,b,c" -> {a, b, c}; empty items are errors (throws std::runtime_error).
+std::vector<std::string> parse_tracker_list(const std::string& text);
+
+/// FNV-1a over the bit patterns of (range, azimuth, amplitude) of every
+/// measurement of `scan`, chained from `h`.
+std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t h);
+inline constexpr std::uint64_t kChecksumSeed = 0xcbf29ce484222325ULL;
+
+/// Runs the comparison; writes DIR/compare.md, DIR/compare.json and
+/// DIR/ospa.svg when out_dir is set. Throws std::runtime_error on a bad
+/// configuration (unknown tracker, invalid scenario).
+CompareResult run_compare(const CompareConfig& config);
+
+nlohmann::ordered_json compare_to_json(const CompareResult& r);
+std::string compare_to_markdown(const CompareResult& r);
+
+}  // namespace mptrack::sim
