@@ -33,6 +33,7 @@
 #include "mptrack/phd/filter_common.h"
 #include "mptrack/phd/mixture.h"
 #include "mptrack/phd/phd_params.h"
+#include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
@@ -84,24 +85,16 @@ class CbMemberFilter {
     counters_ = TrackerCounters{};
     next_label_ = 1;
     scan_index_ = 0;
-    have_time_ = false;
+    clock_.reset();
     initialized_ = true;
     return Status::kOk;
   }
 
   Status step(const ScanType& scan) {
     outputs_.clear();
-    if (!initialized_) {
-      ++counters_.scans_rejected;
-      return Status::kNotInitialized;
-    }
-    if (have_time_ && scan.time_us <= last_time_us_) {
-      ++counters_.scans_rejected;
-      return Status::kOutOfOrder;
-    }
-    const T dt = have_time_ ? T(scan.time_us - last_time_us_) * T(1e-6) : params_.scan_period_s;
-    last_time_us_ = scan.time_us;
-    have_time_ = true;
+    MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
+    const T dt = clock_.elapsed_s(scan.time_us, params_.scan_period_s);
+    clock_.advance(scan.time_us);
     ++counters_.scans;
     counters_.measurements_in += scan.measurements.size();
     batch_.load(scan, params_, model_);
@@ -369,8 +362,7 @@ class CbMemberFilter {
   phd::ReductionSettings<T> reduction_;
   T gate_ = T(0);
   bool initialized_ = false;
-  bool have_time_ = false;
-  std::uint64_t last_time_us_ = 0;
+  ScanClock clock_;
   std::uint32_t scan_index_ = 0;
   std::uint32_t next_label_ = 1;
   TrackerCounters counters_;

@@ -45,6 +45,7 @@
 #include "mptrack/gnn/polar_ekf.h"
 #include "mptrack/measurement.h"
 #include "mptrack/metrics/assignment.h"
+#include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
@@ -78,8 +79,7 @@ class GnnTracker {
     outputs_.clear();
     counters_ = TrackerCounters{};
     next_id_ = 1;
-    last_time_us_ = 0;
-    has_time_ = false;
+    clock_.reset();
     initialized_ = true;
     return Status::kOk;
   }
@@ -96,17 +96,10 @@ class GnnTracker {
   /// numerical_repairs.
   Status step(const ScanType& scan) {
     outputs_.clear();
-    if (!initialized_) {
-      ++counters_.scans_rejected;
-      return Status::kNotInitialized;
-    }
-    if (has_time_ && !(scan.time_us > last_time_us_)) {
-      ++counters_.scans_rejected;
-      return Status::kOutOfOrder;
-    }
+    MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
     const std::size_t invalid = select_valid(scan);
-    if (has_time_) {
-      const T dt = static_cast<T>(scan.time_us - last_time_us_) * T(1e-6);
+    if (clock_.has_time()) {
+      const T dt = clock_.elapsed_s(scan.time_us, T(0));
       for (auto& t : tracks_) {
         cv_predict(t.x, t.P, dt, params_.accel_std_mps2);
         if (keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
@@ -116,8 +109,7 @@ class GnnTracker {
     update_and_manage(scan);
     initiate(scan);
     report(scan);
-    last_time_us_ = scan.time_us;
-    has_time_ = true;
+    clock_.advance(scan.time_us);
     ++counters_.scans;
     return invalid > 0 ? Status::kPartial : Status::kOk;
   }
@@ -289,9 +281,8 @@ class GnnTracker {
   std::array<std::int32_t, kMaxTracks> assigned_{};               ///< per track: valid index or -1
   std::array<PolarPrediction<T>, kMaxTracks> pred_{};
   AssignmentSolver<T, kMaxTracks, kMaxMeasurements + kMaxTracks> solver_;
-  std::uint64_t last_time_us_ = 0;  ///< time of the last accepted scan [us]
+  ScanClock clock_;
   std::uint32_t next_id_ = 1;
-  bool has_time_ = false;
   bool initialized_ = false;
 };
 
