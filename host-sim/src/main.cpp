@@ -45,7 +45,7 @@ int run_info() {
   print_caps<mptrack::LargeCaps>("Large");
   std::printf("trackers:\n");
   for (const auto& t : mptrack::sim::tracker_list()) {
-    std::printf("  %-12s %s%s\n", t.name.c_str(), t.description.c_str(), t.available ? "" : " [not built]");
+    std::printf("  %-12s %s\n", t.name.c_str(), t.description.c_str());
   }
   std::printf("tracker footprint (sizeof, DefaultCaps):\n");
   for (const auto& f : mptrack::sim::tracker_footprints()) {
@@ -118,14 +118,7 @@ void print_summary(const Summary& s, const std::string& out_dir) {
   if (!out_dir.empty()) std::printf("  wrote %s/{summary.json,truth.csv,measurements.csv,tracks.csv,metrics.csv,plot.svg}\n", out_dir.c_str());
 }
 
-std::string default_tracker() {
-  for (const char* name : {"mfbp", "gnn"}) {
-    for (const auto& t : mptrack::sim::tracker_list()) {
-      if (t.name == name && t.available) return name;
-    }
-  }
-  return "oracle";
-}
+
 
 struct Table5Cell {
   double ospa = 0.0, car = 0.0;
@@ -201,11 +194,11 @@ int main(int argc, char** argv) {
 
   std::string tracker_help = "tracker:";
   for (const auto& t : mptrack::sim::tracker_list()) {
-    tracker_help += "\n  " + t.name + ": " + t.description + (t.available ? "" : " [not built]");
+    tracker_help += "\n  " + t.name + ": " + t.description;
   }
   std::string scenario_name = "seed000-s2";
   std::string scenario_file;
-  std::string tracker = default_tracker();
+  std::string tracker = "mfbp";
   std::uint32_t runs = 1;
   std::uint64_t seed = 1;
   std::string out_dir;
@@ -279,7 +272,7 @@ int main(int argc, char** argv) {
   compare->add_option("--trackers", cmp_trackers,
                       "comma-separated tracker names (see `mptrack-sim --help`). Default: polar scenarios "
                       "mfbp,mfbp-filter,gmphd,gmcphd,cbmember,gmcphd-known,gnn; Cartesian (seed001) "
-                      "gmphd,gmphd-known,gmcphd,gmcphd-known,cbmember,cbmember-known (those built)");
+                      "gmphd,gmphd-known,gmcphd,gmcphd-known,cbmember,cbmember-known");
   compare->add_option("--runs", cmp_runs, "Monte Carlo runs (each tracker sees the same runs)")
       ->capture_default_str()->check(CLI::PositiveNumber);
   compare->add_option("--seed", cmp_seed, "random seed (run r, scan k use stream (seed, r, k))")->capture_default_str();

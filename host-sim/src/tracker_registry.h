@@ -1,5 +1,4 @@
-// --tracker names -> adapters. Entries whose core tracker is not in this
-// build are listed as unavailable (so --help can say why).
+// --tracker names -> adapters.
 #pragma once
 
 #include <cstddef>
@@ -14,7 +13,6 @@ namespace mptrack::sim {
 struct TrackerInfo {
   std::string name;
   std::string description;
-  bool available = false;
 };
 
 /// Every registered name, in --help order.
@@ -26,13 +24,13 @@ struct TrackerFootprint {
   std::size_t bytes_float = 0;
   std::size_t bytes_double = 0;
 };
-/// The core trackers built into this tree.
+/// The core trackers of the harness.
 std::vector<TrackerFootprint> tracker_footprints();
 
-/// A fresh adapter, or nullptr with `error` set (unknown or not built).
+/// A fresh adapter, or nullptr with `error` set (unknown name).
 std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::string& error);
 
-// Factories, one per adapter source file (defined only when built).
+// Factories, one per adapter source file.
 std::unique_ptr<TrackerAdapter> make_oracle_tracker();
 std::unique_ptr<TrackerAdapter> make_mfbp_tracker(const std::string& variant);
 std::unique_ptr<TrackerAdapter> make_gnn_tracker();

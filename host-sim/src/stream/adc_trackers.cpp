@@ -8,12 +8,8 @@
 #include "mptrack/math/detmath.h"
 #include "tracker_registry.h"
 #include "trackers/core_adapter.h"
-#if MPTRACK_SIM_HAVE_MFBP
 #include "mptrack/mfbp/mfbp_tracker.h"
-#endif
-#if MPTRACK_SIM_HAVE_GNN
 #include "mptrack/gnn/gnn_tracker.h"
-#endif
 
 namespace mptrack::sim {
 
@@ -73,7 +69,6 @@ scenario::ScenarioSpec tracker_view(const adc::AdcScenario& s) {
 
 namespace {
 
-#if MPTRACK_SIM_HAVE_MFBP
 class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, DefaultCaps>> {
  public:
   explicit AdcMfbpAdapter(bool filter) : filter_(filter) {}
@@ -112,9 +107,7 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
  private:
   bool filter_;
 };
-#endif
 
-#if MPTRACK_SIM_HAVE_GNN
 class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, DefaultCaps>> {
  public:
   std::string init(const TrackerSetup& setup) override {
@@ -129,18 +122,13 @@ class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, Default
     return init_tracker(p);
   }
 };
-#endif
 
 }  // namespace
 
 std::unique_ptr<TrackerAdapter> make_adc_tracker(const std::string& name, std::string& error) {
-#if MPTRACK_SIM_HAVE_MFBP
   if (name == "mfbp") return std::make_unique<AdcMfbpAdapter>(false);
   if (name == "mfbp-filter") return std::make_unique<AdcMfbpAdapter>(true);
-#endif
-#if MPTRACK_SIM_HAVE_GNN
   if (name == "gnn") return std::make_unique<AdcGnnAdapter>();
-#endif
   return make_tracker(name, error);
 }
 
