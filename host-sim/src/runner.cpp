@@ -35,37 +35,33 @@ LatencyStats latency_stats(std::vector<double> v) {
   return s;
 }
 
-namespace {
-
-void add_counters(TrackerCounters& a, const TrackerCounters& b) {
-  a.scans += b.scans;
-  a.scans_rejected += b.scans_rejected;
-  a.measurements_in += b.measurements_in;
-  a.measurements_invalid += b.measurements_invalid;
-  a.measurements_over_cap += b.measurements_over_cap;
-  a.tracks_born += b.tracks_born;
-  a.tracks_confirmed += b.tracks_confirmed;
-  a.tracks_deleted += b.tracks_deleted;
-  a.track_cap_hits += b.track_cap_hits;
-  a.clutter_born += b.clutter_born;
-  a.clutter_deleted += b.clutter_deleted;
-  a.clutter_cap_hits += b.clutter_cap_hits;
-  a.bp_not_converged += b.bp_not_converged;
-  a.numerical_repairs += b.numerical_repairs;
-}
-
-void count_status(Summary& sum, Status st) {
-  ++sum.step_status[to_string(st)];
+void Summary::count_status(Status st) {
+  ++step_status[to_string(st)];
   if (st == Status::kPartial) {
-    ++sum.steps_partial;
+    ++steps_partial;
   } else if (st == Status::kCapacityExceeded) {
-    ++sum.steps_capacity;
+    ++steps_capacity;
   } else if (st != Status::kOk) {
-    ++sum.step_errors;
+    ++step_errors;
   }
 }
 
-}  // namespace
+void Summary::add_counters(const TrackerCounters& run) {
+  counters.scans += run.scans;
+  counters.scans_rejected += run.scans_rejected;
+  counters.measurements_in += run.measurements_in;
+  counters.measurements_invalid += run.measurements_invalid;
+  counters.measurements_over_cap += run.measurements_over_cap;
+  counters.tracks_born += run.tracks_born;
+  counters.tracks_confirmed += run.tracks_confirmed;
+  counters.tracks_deleted += run.tracks_deleted;
+  counters.track_cap_hits += run.track_cap_hits;
+  counters.clutter_born += run.clutter_born;
+  counters.clutter_deleted += run.clutter_deleted;
+  counters.clutter_cap_hits += run.clutter_cap_hits;
+  counters.bp_not_converged += run.bp_not_converged;
+  counters.numerical_repairs += run.numerical_repairs;
+}
 
 Summary run_monte_carlo(const RunConfig& cfg) {
   const scenario::ScenarioSpec& spec = cfg.spec;
@@ -127,11 +123,11 @@ Summary run_monte_carlo(const RunConfig& cfg) {
       const Status st = tracker->step(s, finals);
       const auto t1 = std::chrono::steady_clock::now();
       latency[k - 1] = std::chrono::duration<double, std::micro>(t1 - t0).count();
-      count_status(sum, st);
+      sum.count_status(st);
       progress.tick();
     }
-    count_status(sum, tracker->flush(finals));
-    add_counters(sum.counters, tracker->counters());
+    sum.count_status(tracker->flush(finals));
+    sum.add_counters(tracker->counters());
     all_latency.insert(all_latency.end(), latency.begin(), latency.end());
 
     std::vector<EstimateOut> by_scan(spec.num_scans);

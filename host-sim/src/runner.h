@@ -57,6 +57,11 @@ struct Summary {
   std::uint64_t steps_capacity = 0;     ///< kCapacityExceeded: an internal cap was hit (see counters)
   std::map<std::string, std::uint64_t> step_status;  ///< every step()/flush() status by name
   TrackerCounters counters;             ///< summed over runs
+
+  /// Tallies one step()/flush() status into step_status and the three counts.
+  void count_status(Status st);
+  /// Adds one run's tracker counters to `counters`.
+  void add_counters(const TrackerCounters& run);
 };
 
 /// Runs everything; writes DIR/{summary.json,truth.csv,measurements.csv,

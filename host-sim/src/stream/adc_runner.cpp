@@ -79,33 +79,6 @@ void label_origins(scenario::SimScan& s, double& sum_dr2, double& sum_db2, std::
   }
 }
 
-void count_status_into(Summary& sum, Status st) {
-  ++sum.step_status[to_string(st)];
-  if (st == Status::kPartial) {
-    ++sum.steps_partial;
-  } else if (st == Status::kCapacityExceeded) {
-    ++sum.steps_capacity;
-  } else if (st != Status::kOk) {
-    ++sum.step_errors;
-  }
-}
-
-void add_counters_into(TrackerCounters& a, const TrackerCounters& b) {
-  a.scans += b.scans;
-  a.scans_rejected += b.scans_rejected;
-  a.measurements_in += b.measurements_in;
-  a.measurements_invalid += b.measurements_invalid;
-  a.measurements_over_cap += b.measurements_over_cap;
-  a.tracks_born += b.tracks_born;
-  a.tracks_confirmed += b.tracks_confirmed;
-  a.tracks_deleted += b.tracks_deleted;
-  a.track_cap_hits += b.track_cap_hits;
-  a.clutter_born += b.clutter_born;
-  a.clutter_deleted += b.clutter_deleted;
-  a.clutter_cap_hits += b.clutter_cap_hits;
-  a.bp_not_converged += b.bp_not_converged;
-  a.numerical_repairs += b.numerical_repairs;
-}
 
 LatencyStats stats_of(const std::vector<FrameRecord>& recs, double FrameRecord::*field) {
   std::vector<double> v;
@@ -274,14 +247,14 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
           const std::uint64_t t2 = stream_now_ns();
           const Status st = tracker->step(s, finals);
           const std::uint64_t t3 = stream_now_ns();
-          count_status_into(sum, st);
+          sum.count_status(st);
           r.tracker_us = static_cast<double>(t3 - t2) * 1e-3;
           r.frame_us = static_cast<double>((t1 - t0) + (t3 - t2)) * 1e-3;
           if (cfg.consumer_delay_us > 0) std::this_thread::sleep_for(std::chrono::microseconds(cfg.consumer_delay_us));
           progress.tick();
         });
-    count_status_into(sum, tracker->flush(finals));
-    add_counters_into(sum.counters, tracker->counters());
+    sum.count_status(tracker->flush(finals));
+    sum.add_counters(tracker->counters());
     out.ring.frames_offered += rc.frames_offered;
     out.ring.frames_pushed += rc.frames_pushed;
     out.ring.frames_processed += rc.frames_processed;
