@@ -2,7 +2,7 @@
 //
 // Every function here returns the same bits for the same input on x86-64
 // (SSE2), aarch64, armhf (VFPv4) and Cortex-M7 (fpv5-d16), provided the code
-// is built with mptrack::deterministic (-ffp-contract=off, never -ffast-math).
+// is built with mptrack::deterministic (-ffp-contract=off, never fast-math flags).
 // That is what lets host-sim, the qemu legs and the board share golden files.
 // How it is achieved:
 // - only + - * / and sqrt (all correctly rounded by IEEE 754), comparisons,
