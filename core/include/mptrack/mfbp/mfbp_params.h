@@ -4,7 +4,8 @@
 // [impl]/[fix] default (spec 7). The spec-7 switches are fields here so the
 // paper-literal behaviour can be restored for reproduction: pd_model (A15),
 // amp_loglik (A2), snr_update (A6), nw_forgetting (A9), clutter_rate_in_da
-// (A4), component_absent_evidence (A5), gate_chi2 (A29). Not implemented:
+// (A4), component_absent_evidence (A5), gate_chi2 (A29); association_cavity
+// (false = paper) and process_noise_var (0.01 = paper, A19). Not implemented:
 // `smoother = paper` (A10; only the backward-statistics smoother exists)
 // and `meas_update = ekf` (A14; cubature only). Units are in the names or
 // the comments. validate() is what MfbpTracker::init() runs once; nothing
@@ -89,10 +90,18 @@ struct MfbpParams {
   // --- kinematics (spec 2.1, 2.6) ---
   T scan_period_s = T(1.25);          ///< nominal T [s]; only used for birth gates and the
                                       ///< first prediction; dt comes from the timestamps
-  T process_noise_var = T(0.01);      ///< sigma_v^2 [(m/s^2)^2] (white-acceleration CV model)
+  T process_noise_var = T(0.3);       ///< sigma_v^2 [(m/s^2)^2] (white-acceleration CV model).
+                                      ///< Paper: 0.01, which cannot follow the S1 manoeuvre
+                                      ///< (|a_y| = 0.33 m/s^2 for 122 s, spec 4.1/A19): the CV
+                                      ///< lag leaves 100-250 m errors for ~150 scans after it.
+                                      ///< 0.3 (S1 sweep over 0.01..1, spec A19) [impl].
   T sigma_r_m = T(20);                ///< range noise std [m]
   T sigma_az_rad = T(0.010471975511965976);  ///< azimuth noise std [rad] (0.6 deg)
   T gate_chi2 = T(30);                ///< target gate on e^T (S+R)^-1 e (spec A29, 2 dof) [-]
+  bool association_cavity = true;     ///< [impl] target evidence from the extrinsic (cavity)
+                                      ///< moments: the smoothed belief without the scan's own
+                                      ///< pseudo-measurement (see mfbp_tracker.h); false = the
+                                      ///< MF belief itself (paper, P79)
   T clutter_gate_chi2 = T(30);        ///< component gate under E[D] (spec 3.3 optional) [-]
 
   // --- Doppler (not in the paper [impl]; used only for scans with has_doppler) ---

@@ -608,6 +608,47 @@ class MfbpTracker {
   }
 
   // ----------------------------------------------------------- association
+  /// Removes the scan-k pseudo-measurement (y_bar, R / w) of the previous
+  /// iteration from the smoothed measurement-space moments (z_hat, Sz):
+  /// S_cav^-1 = Sz^-1 - w R^-1, z_cav = S_cav (Sz^-1 z_hat - w R^-1 y_bar).
+  /// [impl, not in the paper] The MF belief of x_k already contains the
+  /// measurement it was associated with, so evidence from it is self-
+  /// reinforcing: of two tracks on an unresolved pair, the upper one keeps
+  /// the upper measurement and the two tracks drift apart (measured on S1:
+  /// median track separation 100-190 m for a 20 m pair). The extrinsic
+  /// (cavity) moments are what BP would pass. Unchanged when there is no
+  /// previous association or the division is not positive definite.
+  void cavity_moments(const TrackSlot& t, std::size_t k, Vec2& z_hat, Mat2& Sz) const {
+    const T w = T(1) - t.missed[k];
+    if (!(w > params_.w_min) || t.n_edges[k] == 0) return;
+    const ScanSlot& s = win(k);
+    Vec2 acc = Vec2::Zero();
+    T w_sum = T(0);
+    for (std::size_t e = 0; e < t.n_edges[k]; ++e) {
+      const std::size_t j = t.edge_meas[k][e];
+      const T a = t.edge_w[k][e];
+      acc(0) += a * (s.r[j] - z_hat(0));
+      acc(1) += a * mfbp::wrap_angle(s.az[j] - z_hat(1));
+      w_sum += a;
+    }
+    if (!(w_sum > params_.w_min)) return;
+    const Vec2 e_bar = acc / w_sum;  // y_bar - z_hat (azimuth wrapped)
+    const T det = Sz(0, 0) * Sz(1, 1) - Sz(0, 1) * Sz(1, 0);
+    if (!(det > T(0))) return;
+    Mat2 info;  // Sz^-1 - w_sum R^-1
+    info << Sz(1, 1) / det - w_sum * R_inv_(0, 0), -Sz(0, 1) / det, -Sz(1, 0) / det,
+        Sz(0, 0) / det - w_sum * R_inv_(1, 1);
+    const T det_i = info(0, 0) * info(1, 1) - info(0, 1) * info(1, 0);
+    if (!(info(0, 0) > T(0)) || !(det_i > T(0))) return;
+    Mat2 S_cav;
+    S_cav << info(1, 1) / det_i, -info(0, 1) / det_i, -info(1, 0) / det_i, info(0, 0) / det_i;
+    // z_cav - z_hat = S_cav (Sz^-1 z_hat - w R^-1 y_bar) - z_hat = -S_cav w R^-1 e_bar
+    const Vec2 g(w_sum * R_inv_(0, 0) * e_bar(0), w_sum * R_inv_(1, 1) * e_bar(1));
+    z_hat -= S_cav * g;
+    z_hat(1) = mfbp::wrap_angle(z_hat(1));
+    Sz = S_cav;
+  }
+
   /// Does track t take part in the association of window scan k?
   static bool participates(const TrackSlot& t, std::size_t k) {
     return t.alive && k >= t.first && !(t.from_birth && k == t.first);
@@ -729,8 +770,9 @@ class MfbpTracker {
         note_repair(mfbp::make_spd(P_k));
         if (!mfbp::cubature_moments<T, 3>(t.xs[k], P_k, z3, S3, C3)) continue;
       }
-      const Vec2 z_hat = z3.template head<2>();
-      const Mat2 Sz = S3.template topLeftCorner<2, 2>();
+      Vec2 z_hat = z3.template head<2>();
+      Mat2 Sz = S3.template topLeftCorner<2, 2>();
+      if (params_.association_cavity) cavity_moments(t, k, z_hat, Sz);
       const T var_d = params_.sigma_doppler_mps * params_.sigma_doppler_mps;
       const Mat2 S = Sz + R_;
       const T det_s = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0);
