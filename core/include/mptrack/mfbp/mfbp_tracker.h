@@ -56,6 +56,7 @@
 #include "mptrack/measurement.h"
 #include "mptrack/mfbp/amplitude_model.h"
 #include "mptrack/mfbp/association_bp.h"
+#include "mptrack/mfbp/cavity.h"
 #include "mptrack/mfbp/clutter_birth.h"
 #include "mptrack/mfbp/cubature.h"
 #include "mptrack/mfbp/dirichlet.h"
@@ -609,15 +610,14 @@ class MfbpTracker {
 
   // ----------------------------------------------------------- association
   /// Removes the scan-k pseudo-measurement (y_bar, R / w) of the previous
-  /// iteration from the smoothed measurement-space moments (z_hat, Sz):
-  /// S_cav^-1 = Sz^-1 - w R^-1, z_cav = S_cav (Sz^-1 z_hat - w R^-1 y_bar).
-  /// [impl, not in the paper] The MF belief of x_k already contains the
-  /// measurement it was associated with, so evidence from it is self-
-  /// reinforcing: of two tracks on an unresolved pair, the upper one keeps
-  /// the upper measurement and the two tracks drift apart (measured on S1:
-  /// median track separation 100-190 m for a 20 m pair). The extrinsic
-  /// (cavity) moments are what BP would pass. Unchanged when there is no
-  /// previous association or the division is not positive definite.
+  /// iteration from the smoothed measurement-space moments (z_hat, Sz)
+  /// (cavity.h). [impl, not in the paper] The MF belief of x_k already
+  /// contains the measurement it was associated with, so evidence from it is
+  /// self-reinforcing; the extrinsic (cavity) moments are what BP would pass.
+  /// It does not remove the pair repulsion on S1 (see association_cavity in
+  /// mfbp_params.h): that feedback runs through the other window scans and
+  /// the prior. Unchanged when there is no previous association or the
+  /// division is not positive definite.
   void cavity_moments(const TrackSlot& t, std::size_t k, Vec2& z_hat, Mat2& Sz) const {
     const T w = T(1) - t.missed[k];
     if (!(w > params_.w_min) || t.n_edges[k] == 0) return;
@@ -633,20 +633,8 @@ class MfbpTracker {
     }
     if (!(w_sum > params_.w_min)) return;
     const Vec2 e_bar = acc / w_sum;  // y_bar - z_hat (azimuth wrapped)
-    const T det = Sz(0, 0) * Sz(1, 1) - Sz(0, 1) * Sz(1, 0);
-    if (!(det > T(0))) return;
-    Mat2 info;  // Sz^-1 - w_sum R^-1
-    info << Sz(1, 1) / det - w_sum * R_inv_(0, 0), -Sz(0, 1) / det, -Sz(1, 0) / det,
-        Sz(0, 0) / det - w_sum * R_inv_(1, 1);
-    const T det_i = info(0, 0) * info(1, 1) - info(0, 1) * info(1, 0);
-    if (!(info(0, 0) > T(0)) || !(det_i > T(0))) return;
-    Mat2 S_cav;
-    S_cav << info(1, 1) / det_i, -info(0, 1) / det_i, -info(1, 0) / det_i, info(0, 0) / det_i;
-    // z_cav - z_hat = S_cav (Sz^-1 z_hat - w R^-1 y_bar) - z_hat = -S_cav w R^-1 e_bar
-    const Vec2 g(w_sum * R_inv_(0, 0) * e_bar(0), w_sum * R_inv_(1, 1) * e_bar(1));
-    z_hat -= S_cav * g;
-    z_hat(1) = mfbp::wrap_angle(z_hat(1));
-    Sz = S_cav;
+    (void)mfbp::remove_pseudo_measurement(z_hat, Sz, e_bar, w_sum,
+                                          Vec2(R_inv_(0, 0), R_inv_(1, 1)));
   }
 
   /// Does track t take part in the association of window scan k?
