@@ -80,22 +80,45 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     p.az_min_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
     p.az_max_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
     p.scan_period_s = s.scan_period_s;
-    p.sigma_r_m = s.sigma_range_m;
-    p.sigma_az_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
+    // Tuned on seed004-drones, 20 runs (docs/results/seed004.md). The limit
+    // is the front end, not the SNR model: drones 1 and 2 share a range /
+    // angle resolution cell (7.5 m, ~0.4 in sin(theta) with the Hamming
+    // taper) from the crossing at n = 22 to n ~ 60, so one of them is missed
+    // in ~half of the frames even at 15-18 dB, and the surviving detection
+    // often lies between the two (up to ~5 m off). Hence:
+    // - measurement noise inflated over the measured RMS (0.77 m, 1.75 deg,
+    //   taken only over detections within 3 m) to 2 m / 4 deg, so merged
+    //   detections still update the tracks instead of spawning new ones;
+    p.sigma_r_m = 2.0;
+    p.sigma_az_rad = scenario::deg_to_rad(4.0);
     p.amplitude_threshold = s.threshold;
     p.swerling = 3;                   // spec 5.1: Swerling 3 drones
-    p.process_noise_var = 9.0;        // (3 m/s^2)^2: track 3 turns at ~8.5 m/s^2 (spec 5.2)
+    // - kinematics-only association with a fixed Pd = 0.4 (front end: a
+    //   drone within 3 m in ~0.5 of drone-frames). The amplitude model
+    //   predicts Pd ~ 0.95 from a drone's 15 dB SNR and therefore reads the
+    //   resolution misses as evidence that the track is gone (at sigma 1 m:
+    //   6.5 m with the amplitude, 6.1 / 5.5 / 5.3 / 5.0 m without at Pd 0.8 /
+    //   0.6 / 0.5 / 0.4; Pd 0.3 is worse again);
+    p.use_amplitude = false;
+    p.pd_no_amplitude = 0.4;
+    p.process_noise_var = 9.0;        // (3 m/s^2)^2: track 3 turns at ~8.5 m/s^2 (spec 5.2); 3..20 flat
     p.v_max_x_mps = 12.0;             // drones fly at 7 m/s (spec 5.2)
     p.v_max_y_mps = 12.0;
-    p.uniform_rate_per_scan = 1.0;    // CFAR false alarms: ~1 per frame at pfa 1e-4
+    // - a clean scenario: uniform clutter at a known rate, no estimated
+    //   Gaussian components (they also fit a slow drone). CFAR gives ~1.4
+    //   false alarms per frame, but 0.5 scores better than 1 or 2 (fewer
+    //   true detections explained away as clutter).
+    p.clutter_mode = ClutterMode::kUniformKnownRate;
+    p.uniform_rate_per_scan = 0.5;
     p.uniform_cnr_prior = 1.0;
     p.clutter_cell_range_m = 8.0;     // about one range resolution cell (7.5 m)
     p.clutter_cell_az_rad = scenario::deg_to_rad(8.0);
-    // Visibility chain: spec 5.1 p_s = 0.95. At 10 Hz a drone beyond 50 m is
-    // detected in about half the frames (Pd ~0.5 at SNR_c < 10 dB), so a
-    // track must survive runs of misses: delete after 6 low-visibility frames.
+    // - visibility chain: spec 5.1 p_s = 0.95; a track must survive runs of
+    //   resolution misses: delete after 10 low-visibility frames (1 s);
+    //   birth visibility 0.7 confirms a two-point birth one frame earlier.
     p.p_survive = 0.95;
-    p.delete_run = 6;
+    p.visibility_at_birth = 0.7;
+    p.delete_run = 10;
     p.tentative_timeout_scans = 10;
     if (filter_) {
       p.window_length = 1;
