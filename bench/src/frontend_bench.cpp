@@ -1,0 +1,113 @@
+// Front end: full frame time (range matched filter, Doppler, angle FFT
+// beamformer, CFAR detection and refinement) for
+//   frontend/seed004  the seed 004 cube (3x3 MIMO, 256 samples, 1 chirp),
+//                     frame 10 of the built-in seed004-drones ADC scenario;
+//   frontend/large    LargeRadarCaps: 12 virtual channels x 256 samples x
+//                     128 chirps, three movers in unit-variance noise.
+// Counters: detections per frame and the per-stage split (steady clock).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "bench_registry.h"
+#include "frontend_test_signals.h"
+#include "mptrack/adc/adc_scenario.h"
+#include "mptrack/adc/frontend_config.h"
+#include "mptrack/adc/synthesizer.h"
+#include "mptrack/frontend/front_end.h"
+
+namespace mptrack::bench {
+namespace {
+
+std::uint32_t steady_ticks() {
+  // Microsecond ticks, wrapping: the front end stores per-stage differences.
+  const auto t = std::chrono::steady_clock::now().time_since_epoch();
+  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(t).count());
+}
+
+template <class Caps>
+struct Rig {
+  frontend::FrontEnd<Caps> fe;
+  frontend::RadarCube<Caps> cube;
+  Scan<float, Caps::kMaxDetections> scan;
+};
+
+template <class Caps>
+void run_frames(benchmark::State& state, Rig<Caps>& rig) {
+  frontend::FrontEndStageTimes times;
+  times.clock = &steady_ticks;
+  std::array<double, 4> stage_ns{};
+  std::size_t detections = 0;
+  for (auto _ : state) {
+    const Status s = rig.fe.process(rig.cube, rig.scan, &times);
+    benchmark::DoNotOptimize(s);
+    detections = rig.scan.measurements.size();
+    for (std::size_t i = 0; i < 4; ++i) stage_ns[i] += static_cast<double>(times.ticks[i]);
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["detections"] = static_cast<double>(detections);
+  state.counters["range_us"] = stage_ns[0] / n * 1e-3;
+  state.counters["doppler_us"] = stage_ns[1] / n * 1e-3;
+  state.counters["angle_us"] = stage_ns[2] / n * 1e-3;
+  state.counters["detect_us"] = stage_ns[3] / n * 1e-3;
+}
+
+void bm_frontend_seed004(benchmark::State& state) {
+  adc::AdcScenario sc;
+  if (!adc::builtin_adc_scenario("seed004-drones", sc)) {
+    state.SkipWithError("seed004-drones scenario missing");
+    return;
+  }
+  auto rig = std::make_unique<Rig<frontend::Seed004RadarCaps>>();
+  adc::FrameSynthesizer synth;
+  std::vector<adc::DroneTruth> truth;
+  if (synth.init(sc, 4, 0) != Status::kOk || synth.synthesize(10, rig->cube, truth) != Status::kOk ||
+      rig->fe.init(adc::frontend_params_for(sc)) != Status::kOk) {
+    state.SkipWithError("seed 004 set-up failed");
+    return;
+  }
+  run_frames(state, *rig);
+}
+
+void bm_frontend_large(benchmark::State& state) {
+  using Large = frontend::LargeRadarCaps;
+  auto rig = std::make_unique<Rig<Large>>();
+  // 77 GHz, 60 us chirp repetition, 590 m gate (as frontend_test's large case).
+  frontend::FrontEndParams p;
+  p.carrier_hz = 77e9;
+  p.chirp_repetition_s = 60e-6;
+  p.max_range_m = 590.0;
+  p.max_detections = 256;
+  const double bin = (299792458.0 / 77e9) / (2.0 * 128.0 * 60e-6);  // Doppler bin [m/s]
+  std::array<test::SynthTarget, 3> t{};
+  t[0].range_m = 212.0;
+  t[0].bearing_rad = 0.35;
+  t[0].radial_mps = 17.3 * bin;
+  t[0].amplitude = 0.05;
+  t[1].range_m = 95.0;
+  t[1].bearing_rad = -0.2;
+  t[1].radial_mps = -5.6 * bin;
+  t[1].amplitude = 0.08;
+  t[2].range_m = 410.0;
+  t[2].bearing_rad = 0.05;
+  t[2].radial_mps = 30.2 * bin;
+  t[2].amplitude = 0.04;
+  test::synthesize<Large>(p, t.data(), t.size(), 1.0, 8, rig->cube);
+  if (rig->fe.init(p) != Status::kOk) {
+    state.SkipWithError("large front-end init failed");
+    return;
+  }
+  run_frames(state, *rig);
+}
+
+}  // namespace
+
+void register_frontend_benchmarks() {
+  benchmark::RegisterBenchmark("frontend/seed004", bm_frontend_seed004)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("frontend/large", bm_frontend_large)->Unit(benchmark::kMicrosecond);
+}
+
+}  // namespace mptrack::bench

@@ -1,0 +1,154 @@
+// Benchmark workloads: scenario specs (seed 000 S2 and a synthetic
+// targets x measurements x clutter-components grid), scan generation and
+// the tracker parameters for each (the same settings the host harness's
+// adapters use, so benchmark and harness run the same configuration).
+//
+// Host-only code: it allocates (std::vector, std::unique_ptr) freely; only
+// the tracker step() calls it times are core.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mptrack/caps.h"
+#include "mptrack/gnn/gnn_params.h"
+#include "mptrack/measurement.h"
+#include "mptrack/mfbp/mfbp_params.h"
+#include "mptrack/phd/phd_params.h"
+#include "mptrack/scenario/builtin.h"
+#include "mptrack/scenario/generator.h"
+
+namespace mptrack::bench {
+
+/// Caps of the workload grid: up to 512 measurements per scan (the issue's
+/// upper end), room for 64 true targets plus tentative tracks.
+struct BenchCaps {
+  static constexpr std::size_t kMaxTargets = 128;
+  static constexpr std::size_t kMaxMeasurements = 512;
+  static constexpr std::size_t kMaxClutterComponents = 8;
+  static constexpr std::size_t kMaxWindow = 7;
+};
+
+/// One point of the workload grid.
+struct Workload {
+  std::uint32_t targets = 8;              ///< true targets, all alive for the whole run
+  std::uint32_t measurements = 128;       ///< expected measurements per scan (targets + clutter)
+  std::uint32_t clutter_components = 2;   ///< non-uniform (Gaussian) clutter components
+};
+
+/// Synthetic polar scenario in seed 000's region and sensor (10-50 km,
+/// 10-60 deg, sigma 20 m / 0.6 deg, T = 1.25 s): targets on an 8 x 8 grid of
+/// (range, azimuth) cells moving at constant velocity, SNR 10 (P_D 0.95),
+/// Gaussian clutter components between them and uniform clutter making up
+/// the rest of the expected measurement count.
+scenario::ScenarioSpec workload_spec(const Workload& w, std::uint32_t num_scans);
+
+/// The built-in seed 000 S2 (Table IV); aborts if missing (cannot happen).
+scenario::ScenarioSpec seed000_s2();
+
+/// Sum of the uniform components' mean counts (the known uniform rate).
+double uniform_rate(const scenario::ScenarioSpec& spec);
+
+/// Scans first..first+count-1 of run 0 converted to tracker input.
+template <class T, std::size_t N>
+std::vector<std::unique_ptr<Scan<T, N>>> generate_scans(const scenario::ScenarioSpec& spec,
+                                                        std::uint64_t seed, std::uint32_t first,
+                                                        std::uint32_t count) {
+  std::vector<std::unique_ptr<Scan<T, N>>> out;
+  scenario::Generator gen;
+  if (gen.init(spec, seed, 0) != Status::kOk) return out;
+  scenario::SimScan sim;
+  for (std::uint32_t k = first; k < first + count; ++k) {
+    if (gen.generate(k, sim) != Status::kOk) break;
+    auto scan = std::make_unique<Scan<T, N>>();
+    (void)scenario::to_scan(sim, *scan);  // over-cap measurements are cut (counted by nobody: caps are sized)
+    out.push_back(std::move(scan));
+  }
+  return out;
+}
+
+/// MF-BP parameters for a polar scenario (as host-sim's mfbp adapter):
+/// window 1 = online filter, 7 = the paper's smoother (slide 3).
+template <class T>
+MfbpParams<T> mfbp_params_for(const scenario::ScenarioSpec& s, std::size_t window) {
+  MfbpParams<T> p = seed000_default_params<T>();
+  p.r_min_m = T(s.region.range_min_m);
+  p.r_max_m = T(s.region.range_max_m);
+  p.az_min_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
+  p.az_max_rad = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
+  p.scan_period_s = T(s.scan_period_s);
+  p.sigma_r_m = T(s.sigma_range_m);
+  p.sigma_az_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
+  p.amplitude_threshold = T(s.threshold);
+  p.swerling = s.targets.empty() ? 1 : static_cast<int>(s.targets.front().swerling);
+  p.uniform_rate_per_scan = T(uniform_rate(s) > 0.0 ? uniform_rate(s) : 1.0);
+  for (const auto& c : s.clutter) {
+    if (c.uniform) {
+      p.uniform_cnr_prior = T(c.cnr);
+      break;
+    }
+  }
+  if (window == 1) {
+    p.window_length = 1;
+    p.slide = 1;
+  }
+  return p;
+}
+
+/// GM-PHD / GM-CPHD parameters for a polar scenario (as host-sim's gmphd adapter).
+template <class T>
+phd::FilterParams<T> phd_params_for(const scenario::ScenarioSpec& s) {
+  phd::FilterParams<T> p;
+  p.space = phd::MeasurementSpace::kPolar;
+  p.sigma_r_m = T(s.sigma_range_m);
+  p.sigma_az_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
+  p.region_min0 = T(s.region.range_min_m);
+  p.region_max0 = T(s.region.range_max_m);
+  p.region_min1 = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
+  p.region_max1 = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
+  p.scan_period_s = T(s.scan_period_s);
+  p.accel_std_mps2 = T(1);
+  p.birth_velocity_std_mps = T(60);
+  p.threshold = T(s.threshold);
+  const bool sw3 = !s.targets.empty() && s.targets.front().swerling == scenario::Swerling::kThree;
+  p.swerling_order = sw3 ? 2 : 1;
+  double snr = 0.0;
+  for (const auto& t : s.targets) snr += t.snr;
+  p.target_power_prior = T(1.0 + (s.targets.empty() ? 10.0 : snr / static_cast<double>(s.targets.size())));
+  p.detection_prob = T(0.9);
+  const double rate = uniform_rate(s);
+  p.clutter_rate = T(rate > 0.0 ? rate : 1.0);
+  p.weibull_shape = T(1);
+  double cnr = 0.0;
+  for (const auto& c : s.clutter) {
+    if (c.uniform) {
+      cnr = c.cnr;
+      break;
+    }
+  }
+  p.clutter_scale = T(1.0 + cnr);
+  p.hotspot_half_width0 = T(500);
+  p.hotspot_half_width1 = T(scenario::deg_to_rad(2.0));
+  p.clutter_mode = phd::ClutterMode::kEstimatedMap;
+  return p;
+}
+
+/// GNN parameters for a polar scenario (as host-sim's gnn adapter).
+template <class T>
+GnnParams<T> gnn_params_for(const scenario::ScenarioSpec& s) {
+  GnnParams<T> p;
+  p.sigma_range_m = T(s.sigma_range_m);
+  p.sigma_azimuth_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
+  p.min_range_m = T(s.region.range_min_m);
+  p.max_range_m = T(s.region.range_max_m);
+  p.min_azimuth_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
+  p.max_azimuth_rad = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
+  p.accel_std_mps2 = T(1);
+  p.init_velocity_std_mps = T(60);
+  return p;
+}
+
+}  // namespace mptrack::bench
