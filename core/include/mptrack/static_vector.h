@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <new>
 #include <type_traits>
 
 #include "mptrack/status.h"
@@ -66,7 +67,9 @@ class StaticVector {
   /// Sets the size; new elements are value-initialised. kCapacityExceeded if n > N.
   Status resize(std::size_t n) {
     if (n > N) return Status::kCapacityExceeded;
-    for (std::size_t k = size_; k < n; ++k) items_[k] = T{};
+    // Value-initialise in place (placement new): `items_[k] = T{}` would build a
+    // temporary on the stack, kilobytes for a ScanEstimate on a Cortex-M stack.
+    for (std::size_t k = size_; k < n; ++k) ::new (static_cast<void*>(&items_[k])) T();  // placement
     size_ = n;
     return Status::kOk;
   }

@@ -25,7 +25,7 @@ namespace mptrack {
 /// Detection-probability model (spec 2.4, A15).
 enum class PdModel : std::uint8_t {
   kExact,  ///< Pd = e^-x sum_{l<n} x^l/l!, x = n d^2/(1+snr) (Gamma(n) power), default
-  kPaper,  ///< (P9) Pd = exp(-n d^2/(1+snr)); identical for Swerling I
+  kPaper,  ///< (P9) Pd = e^(-n d^2/(1+snr)); identical for Swerling I
 };
 
 /// Expected amplitude log-likelihood used by the association (spec 2.5, A2).
