@@ -44,3 +44,22 @@ target_compile_options(mptrack_embedded INTERFACE
   -ffunction-sections -fdata-sections)
 
 set(CMAKE_CXX_EXTENSIONS OFF)
+
+# Sanitizer leg (reliability issue; style_anchors.md section 13: "host legs
+# with -fsanitize=address,undefined"). Host only: ASan/UBSan runtimes are
+# not available for the bare-metal or qemu targets. -fno-sanitize-recover
+# turns every UBSan report into a failing exit, so ctest sees it.
+# mptrack_deterministic links it, so every target built here gets it.
+option(MPTRACK_SANITIZE "Build everything with -fsanitize=address,undefined" OFF)
+add_library(mptrack_sanitize INTERFACE)
+add_library(mptrack::sanitize ALIAS mptrack_sanitize)
+if(MPTRACK_SANITIZE)
+  set(mptrack_sanitize_flags -fsanitize=address,undefined -fno-sanitize-recover=all
+      -fno-omit-frame-pointer)
+  target_compile_options(mptrack_sanitize INTERFACE ${mptrack_sanitize_flags} -g)
+  target_link_options(mptrack_sanitize INTERFACE ${mptrack_sanitize_flags})
+  # Tells tests/support/alloc_guard.cpp to count through the sanitizer's
+  # malloc hooks instead of interposing malloc (which would bypass ASan).
+  target_compile_definitions(mptrack_sanitize INTERFACE MPTRACK_SANITIZE=1)
+  target_link_libraries(mptrack_deterministic INTERFACE mptrack_sanitize)
+endif()

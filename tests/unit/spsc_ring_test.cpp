@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <thread>
 
@@ -95,4 +96,62 @@ TEST_CASE("producer faster than consumer: every frame processed once or counted 
   CHECK(out_of_order == 0);
   CHECK(processed == accepted);
   CHECK(ring.frames_processed() + ring.dropped_frames() == kFrames);
+}
+
+TEST_CASE("consumer stall: the ring fills, the overflow is counted, the stored frames come out in order") {
+  SpscRing<Frame, 8> ring;  // holds 7
+  for (std::uint32_t seq = 0; seq < 100; ++seq) {
+    const Status s = ring.push(make_frame(seq));
+    CHECK(s == (seq < 7 ? Status::kOk : Status::kBufferFull));
+  }
+  CHECK(ring.frames_pushed() == 7);
+  CHECK(ring.dropped_frames() == 93);
+  for (std::uint32_t seq = 0; seq < 7; ++seq) {  // the stall ends
+    const Frame* f = ring.begin_read();
+    REQUIRE(f != nullptr);
+    CHECK(f->sequence == seq);
+    CHECK(intact(*f));
+    ring.end_read();
+  }
+  CHECK(ring.begin_read() == nullptr);
+  CHECK(ring.push(make_frame(100)) == Status::kOk);  // the producer is accepted again
+  const Frame* f = ring.begin_read();
+  REQUIRE(f != nullptr);
+  CHECK(f->sequence == 100);
+  ring.end_read();
+  CHECK(ring.frames_processed() + ring.dropped_frames() == 101);
+}
+
+TEST_CASE("bursty producer, slow consumer: every frame processed once or counted dropped, none torn") {
+  static SpscRing<Frame, 16> ring;
+  constexpr std::uint32_t kBursts = 200;
+  constexpr std::uint32_t kBurst = 24;  // longer than the ring: every burst overflows
+  std::thread producer([&] {
+    for (std::uint32_t b = 0; b < kBursts; ++b) {
+      for (std::uint32_t i = 0; i < kBurst; ++i) static_cast<void>(ring.push(make_frame(b * kBurst + i)));
+      std::this_thread::sleep_for(std::chrono::microseconds(300));
+    }
+  });
+  std::uint32_t processed = 0, torn = 0, not_increasing = 0;
+  std::int64_t last = -1;
+  while (true) {
+    const Frame* f = ring.begin_read();
+    if (f == nullptr) {
+      if (ring.frames_pushed() + ring.dropped_frames() == kBursts * kBurst && ring.size() == 0) break;
+      std::this_thread::yield();
+      continue;
+    }
+    if (!intact(*f)) ++torn;
+    if (static_cast<std::int64_t>(f->sequence) <= last) ++not_increasing;  // twice or reordered
+    last = f->sequence;
+    ++processed;
+    std::this_thread::sleep_for(std::chrono::microseconds(20));  // slow consumer
+    ring.end_read();
+  }
+  producer.join();
+  CHECK(torn == 0);
+  CHECK(not_increasing == 0);
+  CHECK(processed == ring.frames_pushed());
+  CHECK(ring.dropped_frames() > 0);  // the bursts did overflow
+  CHECK(ring.frames_processed() + ring.dropped_frames() == kBursts * kBurst);
 }

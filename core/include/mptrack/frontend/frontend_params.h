@@ -93,7 +93,9 @@ inline double wavelength_m(const FrontEndParams& p) { return kSpeedOfLight_mps /
 /// Number of reference chirp samples L = round(T_Tx f_s).
 inline std::size_t chirp_samples(const FrontEndParams& p) {
   const double x = p.chirp_duration_s * p.sample_rate_hz + 0.5;
-  return x < 1.0 ? std::size_t{0} : static_cast<std::size_t>(x);
+  // NaN or beyond any cap maps to 0 ("does not fit", init() rejects it):
+  // casting an out-of-range double is undefined (fuzz finding F6).
+  return (x >= 1.0 && x < 1e9) ? static_cast<std::size_t>(x) : std::size_t{0};
 }
 
 /// Range per fast-time sample c / (2 f_s) [m].

@@ -1,0 +1,313 @@
+// Input validation at every tracker's public entry points (reliability
+// issue; docs/reliability.md has the table of bad inputs and statuses).
+// Same checks for GNN, MF-BP (online filter), GM-PHD, GM-CPHD, CBMeMBer:
+//   - each bad measurement is skipped: step() returns kPartial, it counts in
+//     measurements_invalid, and the valid measurements of the scan are used;
+//   - a scan whose time does not increase is refused whole (kOutOfOrder,
+//     scans_rejected) and leaves no trace: a twin tracker that never saw it
+//     reports the same bits afterwards;
+//   - step() before init() is kNotInitialized; 1000 empty scans keep
+//     everything finite and the tracker still picks up a target afterwards.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "alloc_guard.h"
+#include "mptrack/cbmember/cbmember_filter.h"
+#include "mptrack/gnn/gnn_tracker.h"
+#include "mptrack/mfbp/mfbp_tracker.h"
+#include "mptrack/phd/phd_filter.h"
+
+using mptrack::Status;
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+mptrack::Measurement<float> meas(float r, float az, float amp) {
+  mptrack::Measurement<float> m;
+  m.range_m = r;
+  m.azimuth_rad = az;
+  m.amplitude = amp;
+  return m;
+}
+
+// Per tracker: params, a target position (measurement space), a point
+// outside the region, the scan period, and whether amplitude is checked.
+struct GnnCase {
+  using Tracker = mptrack::GnnTracker<float, mptrack::SmallBoardCaps>;
+  static constexpr const char* kName = "gnn";
+  static Tracker::Params params() { return Tracker::Params{}; }
+  static mptrack::Measurement<float> target() { return meas(50.0f, 0.3f, 10.0f); }
+  static constexpr float kOutsideRange = 500.0f;   // max_range_m = 200
+  static constexpr float kOutsideAz = 3.5f;        // > pi
+  static constexpr bool kChecksAmplitude = false;  // GNN does not use amplitude
+  static constexpr std::uint64_t kDtUs = 100000;
+};
+struct MfbpCase {
+  using Tracker = mptrack::MfbpTracker<float, mptrack::SmallBoardCaps>;
+  static constexpr const char* kName = "mfbp";
+  static Tracker::Params params() {
+    Tracker::Params p;
+    p.window_length = 1;  // online filter: one finalised scan per step
+    p.slide = 1;
+    return p;
+  }
+  static mptrack::Measurement<float> target() { return meas(30000.0f, 0.6f, 6.0f); }
+  static constexpr float kOutsideRange = 60000.0f;  // r_max_m = 50000
+  static constexpr float kOutsideAz = 1.5f;         // az_max_rad = 60 deg
+  static constexpr bool kChecksAmplitude = true;    // amplitude > threshold 0.715
+  static constexpr std::uint64_t kDtUs = 1250000;
+};
+template <class Filter, const char* Name>
+struct IggmCase {
+  using Tracker = Filter;
+  static constexpr const char* kName = Name;
+  static typename Tracker::Params params() {
+    typename Tracker::Params p;
+    // Polar measurement space, so both range and azimuth have bounds (in
+    // the Cartesian default the region is an x/y box: any azimuth is inside).
+    p.space = mptrack::phd::MeasurementSpace::kPolar;
+    p.region_min0 = 10.0f;
+    p.region_max0 = 1000.0f;
+    p.region_min1 = -1.0f;
+    p.region_max1 = 1.0f;
+    return p;
+  }
+  static mptrack::Measurement<float> target() { return meas(300.0f, 0.5f, 8.0f); }
+  static constexpr float kOutsideRange = 1500.0f;  // region_max0 = 1000 m
+  static constexpr float kOutsideAz = 1.3f;        // region_max1 = 1 rad
+  static constexpr bool kChecksAmplitude = true;   // amplitude >= threshold 1.5174
+  static constexpr std::uint64_t kDtUs = 1000000;
+};
+constexpr char kPhdName[] = "gmphd";
+constexpr char kCphdName[] = "gmcphd";
+constexpr char kCbmName[] = "cbmember";
+using PhdCase = IggmCase<mptrack::phd::GmPhdFilter<float, mptrack::SmallBoardCaps>, kPhdName>;
+using CphdCase = IggmCase<mptrack::phd::GmCphdFilter<float, mptrack::SmallBoardCaps>, kCphdName>;
+using CbmCase = IggmCase<mptrack::cbmember::CbMemberFilter<float, mptrack::SmallBoardCaps>, kCbmName>;
+
+template <class Estimate>
+bool identical(const Estimate& a, const Estimate& b) {
+  if (a.time_us != b.time_us || a.tracks.size() != b.tracks.size() ||
+      a.clutter.size() != b.clutter.size()) {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.tracks.size(); ++i) {
+    const auto& x = a.tracks[i];
+    const auto& y = b.tracks[i];
+    if (x.id != y.id || x.measurement_index != y.measurement_index || x.confirmed != y.confirmed ||
+        std::memcmp(x.state.data(), y.state.data(), sizeof(x.state)) != 0 ||
+        std::memcmp(x.covariance.data(), y.covariance.data(), sizeof(x.covariance)) != 0 ||
+        std::memcmp(&x.existence, &y.existence, sizeof(x.existence)) != 0) {
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < a.clutter.size(); ++i) {
+    if (std::memcmp(&a.clutter[i].expected_count, &b.clutter[i].expected_count,
+                    sizeof(a.clutter[i].expected_count)) != 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+template <class Tracker>
+bool all_outputs_identical(const Tracker& a, const Tracker& b) {
+  if (a.outputs().size() != b.outputs().size()) return false;
+  for (std::size_t k = 0; k < a.outputs().size(); ++k) {
+    if (!identical(a.outputs()[k], b.outputs()[k])) return false;
+  }
+  return true;
+}
+
+template <class Tracker>
+bool outputs_finite(const Tracker& t) {
+  for (const auto& e : t.outputs()) {
+    for (const auto& r : e.tracks) {
+      for (int i = 0; i < 4; ++i) {
+        if (!mptrack::is_finite(r.state(i))) return false;
+        for (int j = 0; j < 4; ++j) {
+          if (!mptrack::is_finite(r.covariance(i, j))) return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+template <class Case>
+std::unique_ptr<typename Case::Tracker> make_tracker() {
+  auto t = std::make_unique<typename Case::Tracker>();
+  REQUIRE(t->init(Case::params()) == Status::kOk);
+  return t;
+}
+
+template <class Case>
+typename Case::Tracker::ScanType scan_at(std::uint64_t k, std::vector<mptrack::Measurement<float>> ms) {
+  typename Case::Tracker::ScanType s;
+  s.time_us = 1000000 + k * Case::kDtUs;
+  for (const auto& m : ms) REQUIRE(s.measurements.push_back(m) == Status::kOk);
+  return s;
+}
+
+}  // namespace
+
+#define MPTRACK_TRACKER_CASES GnnCase, MfbpCase, PhdCase, CphdCase, CbmCase
+
+TEST_CASE_TEMPLATE("validation: each bad measurement is skipped, counted and reported as kPartial",
+                   Case, MPTRACK_TRACKER_CASES) {
+  const auto good = Case::target();
+  struct Bad {
+    const char* what;
+    mptrack::Measurement<float> m;
+    bool amplitude;  // only meaningful for trackers that use amplitude
+  };
+  const Bad bad[] = {
+      {"NaN range", meas(kNaN, good.azimuth_rad, good.amplitude), false},
+      {"+Inf range", meas(kInf, good.azimuth_rad, good.amplitude), false},
+      {"-Inf azimuth", meas(good.range_m, -kInf, good.amplitude), false},
+      {"NaN azimuth", meas(good.range_m, kNaN, good.amplitude), false},
+      {"range outside region", meas(Case::kOutsideRange, good.azimuth_rad, good.amplitude), false},
+      {"azimuth outside region", meas(good.range_m, Case::kOutsideAz, good.amplitude), false},
+      {"NaN amplitude", meas(good.range_m, good.azimuth_rad, kNaN), true},
+      {"+Inf amplitude", meas(good.range_m, good.azimuth_rad, kInf), true},
+      {"negative amplitude", meas(good.range_m, good.azimuth_rad, -3.0f), true},
+      {"zero amplitude", meas(good.range_m, good.azimuth_rad, 0.0f), true},
+  };
+  for (const Bad& b : bad) {
+    auto t = make_tracker<Case>();
+    const Status s = t->step(scan_at<Case>(0, {good, b.m}));
+    const bool expect_rejected = !b.amplitude || Case::kChecksAmplitude;
+    const std::string line = std::string(Case::kName) + ": " + b.what + " -> " + mptrack::to_string(s);
+    MESSAGE(line);
+    CHECK(s == (expect_rejected ? Status::kPartial : Status::kOk));
+    CHECK(t->counters().measurements_in == 2);
+    CHECK(t->counters().measurements_invalid == (expect_rejected ? 1u : 0u));
+    CHECK(t->counters().scans == 1);
+    CHECK(outputs_finite(*t));
+  }
+}
+
+TEST_CASE_TEMPLATE("validation: valid measurements of a partly bad scan still make a track", Case,
+                   MPTRACK_TRACKER_CASES) {
+  auto t = make_tracker<Case>();
+  const auto good = Case::target();
+  std::size_t reported = 0;
+  for (std::uint64_t k = 0; k < 15; ++k) {
+    const Status s = t->step(scan_at<Case>(
+        k, {meas(kNaN, 0.0f, 5.0f), good, meas(Case::kOutsideRange, good.azimuth_rad, 5.0f)}));
+    CHECK(s == Status::kPartial);
+    for (const auto& e : t->outputs()) reported = e.tracks.size();
+  }
+  CHECK(t->counters().measurements_invalid == 30);
+  CHECK(t->counters().measurements_in == 45);
+  REQUIRE(reported >= 1);
+  const auto& r = t->outputs()[t->outputs().size() - 1].tracks[0];
+  // The track sits on the valid measurement (index 1 of each scan).
+  CHECK(r.measurement_index == 1);
+  CHECK(outputs_finite(*t));
+}
+
+TEST_CASE_TEMPLATE("validation: a scan with an equal or earlier time is refused and leaves no trace",
+                   Case, MPTRACK_TRACKER_CASES) {
+  auto a = make_tracker<Case>();
+  auto b = make_tracker<Case>();  // twin: never sees the refused scans
+  const auto good = Case::target();
+  for (std::uint64_t k = 0; k < 12; ++k) {
+    const auto s = scan_at<Case>(k, {good, meas(good.range_m * 0.9f, good.azimuth_rad, 4.0f)});
+    const Status sa = a->step(s);
+    const Status sb = b->step(s);
+    CHECK(sa == sb);
+    CHECK(all_outputs_identical(*a, *b));
+    if (k == 5 || k == 8) {
+      // equal time, then 0.5 s back, each with plausible measurements
+      auto same = scan_at<Case>(k, {good, meas(good.range_m * 1.01f, good.azimuth_rad, 9.0f)});
+      CHECK(a->step(same) == Status::kOutOfOrder);
+      auto back = same;
+      back.time_us -= 500000;
+      CHECK(a->step(back) == Status::kOutOfOrder);
+    }
+  }
+  CHECK(a->counters().scans_rejected == 4);
+  CHECK(a->counters().scans == 12);
+  CHECK(a->counters().measurements_in == b->counters().measurements_in);
+}
+
+TEST_CASE_TEMPLATE("validation: step() before init() is kNotInitialized and counted", Case,
+                   MPTRACK_TRACKER_CASES) {
+  auto t = std::make_unique<typename Case::Tracker>();
+  CHECK(t->step(scan_at<Case>(0, {Case::target()})) == Status::kNotInitialized);
+  CHECK(t->counters().scans_rejected == 1);
+  CHECK(t->counters().measurements_in == 0);
+  CHECK(t->flush() == Status::kNotInitialized);
+}
+
+TEST_CASE_TEMPLATE("validation: 1000 empty scans keep the tracker finite and it still finds a target",
+                   Case, MPTRACK_TRACKER_CASES) {
+  auto t = make_tracker<Case>();
+  const auto good = Case::target();
+  for (std::uint64_t k = 0; k < 10; ++k) REQUIRE(ok(t->step(scan_at<Case>(k, {good}))));
+  std::size_t max_reported_late = 0;
+  for (std::uint64_t k = 10; k < 1010; ++k) {
+    mptrack::test::NoAllocScope guard;
+    const Status s = t->step(scan_at<Case>(k, {}));
+    CHECK(guard.allocations() == 0);
+    REQUIRE(s == Status::kOk);
+    if (k > 100) {
+      for (const auto& e : t->outputs()) {
+        if (e.tracks.size() > max_reported_late) max_reported_late = e.tracks.size();
+      }
+    }
+  }
+  CHECK(max_reported_late == 0);  // the target's track is gone long before scan 100
+  CHECK(outputs_finite(*t));
+  std::size_t reported = 0;
+  for (std::uint64_t k = 1010; k < 1025; ++k) {
+    REQUIRE(ok(t->step(scan_at<Case>(k, {good}))));
+    for (const auto& e : t->outputs()) reported = e.tracks.size();
+  }
+  CHECK(reported == 1);
+  CHECK(outputs_finite(*t));
+}
+
+TEST_CASE_TEMPLATE("validation: duplicated measurements give a bounded, finite result", Case,
+                   MPTRACK_TRACKER_CASES) {
+  auto t = make_tracker<Case>();
+  const auto good = Case::target();
+  std::size_t reported = 0;
+  for (std::uint64_t k = 0; k < 20; ++k) {
+    // the same detection twice in every scan (e.g. a double-reporting detector)
+    REQUIRE(ok(t->step(scan_at<Case>(k, {good, good}))));
+    for (const auto& e : t->outputs()) reported = e.tracks.size();
+  }
+  // Measured: 2 tracks in all five trackers (finding F11: no tracker
+  // de-duplicates; see the skipped test below).
+  const std::string line = std::string(Case::kName) +
+                           ": tracks after 20 scans of duplicated detections: " + std::to_string(reported);
+  MESSAGE(line);
+  CHECK(reported >= 1);
+  CHECK(reported <= 2);
+  CHECK(t->counters().measurements_invalid == 0);
+  CHECK(outputs_finite(*t));
+}
+
+TEST_CASE_TEMPLATE("F11: duplicated measurements end in one track, not two" * doctest::skip(), Case,
+                   MPTRACK_TRACKER_CASES) {
+  auto t = make_tracker<Case>();
+  const auto good = Case::target();
+  std::size_t reported = 0;
+  for (std::uint64_t k = 0; k < 20; ++k) {
+    REQUIRE(ok(t->step(scan_at<Case>(k, {good, good}))));
+    for (const auto& e : t->outputs()) reported = e.tracks.size();
+  }
+  CHECK(reported == 1);
+}
