@@ -215,6 +215,7 @@ CompareResult run_compare(const CompareConfig& cfg) {
       TrackerSetup setup;
       setup.spec = spec;
       setup.clutter_scale = cfg.clutter_scale;
+      setup.mfbp_params = cfg.mfbp_params;
       error = tracker->init(setup);
       if (!error.empty()) throw std::runtime_error("tracker " + names[t] + ": " + error);
       std::vector<EstimateOut> finals;

@@ -31,6 +31,7 @@ struct CompareConfig {
   std::uint32_t runs = 1;
   std::uint64_t seed = 1;
   double clutter_scale = 1.0;
+  std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
   double ospa_cutoff_m = 0.0;         ///< c [m]; 0 = the scenario's (see default_ospa())
   double ospa_order = 0.0;            ///< p; 0 = the scenario's
   std::string out_dir;                ///< "" = write nothing

@@ -1,9 +1,11 @@
 // Per-scan evaluation of one tracker output against truth (seed 000 spec 5.1):
 // OSPA and GOSPA (p = 2, c = 631 m) on confirmed-track positions, CAR and NFT
-// from the OSPA assignment. Aggregation over runs and scans is in runner.h.
+// from the OSPA assignment, and the identity CAR (metrics.cpp). Aggregation
+// over runs and scans is in runner.h.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -26,13 +28,17 @@ struct ScanMetrics {
   std::uint32_t false_tracks = 0;  ///< confirmed tracks not assigned to a truth within c (NFT)
   std::uint32_t car_total = 0;     ///< truths with a measurement in this scan
   std::uint32_t car_correct = 0;   ///< ... whose matched track picked exactly that measurement
+  std::uint32_t car_id_correct = 0;  ///< ... picked by a track labelled with that target (identity CAR)
 };
 
 class ScanEvaluator {
  public:
   /// cutoff_m: OSPA/GOSPA c [m] (seed 000: 631 m; seed 004: 10 m).
   explicit ScanEvaluator(double cutoff_m = kOspaCutoff_m);
+  /// Forgets the track labels of the identity CAR; call before each run.
+  void begin_run() { labels_.clear(); }
   /// Evaluates the confirmed tracks of `est` against the truth of `scan`.
+  /// Scans of one run must come in order (the identity CAR labels tracks).
   /// Throws std::runtime_error if more than kMaxEvalPoints points are given.
   ScanMetrics evaluate(const scenario::SimScan& scan, const EstimateOut& est);
 
@@ -40,6 +46,7 @@ class ScanEvaluator {
   // The metric objects hold a kMaxEvalPoints^2 cost matrix: keep them on the heap.
   std::unique_ptr<OspaMetric<double, kMaxEvalPoints>> ospa_;
   std::unique_ptr<GospaMetric<double, kMaxEvalPoints>> gospa_;
+  std::map<std::uint32_t, std::uint32_t> labels_;  ///< track id -> target id (identity CAR)
 };
 
 }  // namespace mptrack::sim

@@ -100,6 +100,7 @@ Summary run_monte_carlo(const RunConfig& cfg) {
   Progress progress(spec.name + " " + cfg.tracker, static_cast<std::uint64_t>(cfg.runs) * spec.num_scans,
                     cfg.progress);
   for (std::uint32_t run = 0; run < cfg.runs; ++run) {
+    evaluator.begin_run();
     scenario::Generator gen;
     scenario::GeneratorOptions options;
     options.clutter_scale = cfg.clutter_scale;
@@ -109,6 +110,7 @@ Summary run_monte_carlo(const RunConfig& cfg) {
     TrackerSetup setup;
     setup.spec = spec;
     setup.clutter_scale = cfg.clutter_scale;
+    setup.mfbp_params = cfg.mfbp_params;
     error = tracker->init(setup);
     if (!error.empty()) throw std::runtime_error("tracker " + cfg.tracker + ": " + error);
 
@@ -154,6 +156,7 @@ Summary run_monte_carlo(const RunConfig& cfg) {
       truths_sum += m.truths;
       sum.car_correct += m.car_correct;
       sum.car_total += m.car_total;
+      sum.car_id_correct += m.car_id_correct;
     }
     tracks_found_sum += static_cast<double>(found.size());
 
@@ -174,6 +177,8 @@ Summary run_monte_carlo(const RunConfig& cfg) {
   sum.mean_confirmed_tracks = confirmed_sum / n_eval;
   sum.mean_truths = truths_sum / n_eval;
   sum.car = sum.car_total > 0 ? static_cast<double>(sum.car_correct) / static_cast<double>(sum.car_total) : 0.0;
+  sum.car_identity =
+      sum.car_total > 0 ? static_cast<double>(sum.car_id_correct) / static_cast<double>(sum.car_total) : 0.0;
   sum.tracks_found_per_run = tracks_found_sum / static_cast<double>(cfg.runs);
   sum.mean_measurements = measurements_sum / (static_cast<double>(cfg.runs) * spec.num_scans);
   sum.latency = latency_stats(all_latency);

@@ -19,6 +19,7 @@ struct RunConfig {
   std::uint32_t runs = 1;
   std::uint64_t seed = 1;
   double clutter_scale = 1.0;   ///< multiplies every clutter mean count
+  std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
   std::string out_dir;          ///< "" = write nothing
   std::int64_t csv_runs = -1;   ///< runs written to the CSVs (-1 = all)
   bool plot = true;             ///< write plot.svg (run 0)
@@ -45,6 +46,8 @@ struct Summary {
   double mean_gospa = 0.0;      ///< [m]
   double car = 0.0;             ///< car_correct / car_total (0 if no detected truth)
   std::uint64_t car_correct = 0, car_total = 0;
+  double car_identity = 0.0;    ///< car_id_correct / car_total (identity CAR, metrics.cpp)
+  std::uint64_t car_id_correct = 0;
   double nft = 0.0;             ///< mean false confirmed tracks per evaluation scan
   double mean_confirmed_tracks = 0.0;   ///< per evaluation scan
   double mean_truths = 0.0;             ///< per evaluation scan

@@ -46,6 +46,7 @@ struct EstimateOut {
 struct TrackerSetup {
   scenario::ScenarioSpec spec;           ///< the scenario (region, noise, threshold, known clutter)
   double clutter_scale = 1.0;            ///< applied to known clutter rates (mfbp-kce/nce)
+  std::vector<std::string> mfbp_params;  ///< "name=value" MfbpParams overrides (--mfbp-param)
 };
 
 class TrackerAdapter {

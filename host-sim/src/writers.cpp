@@ -70,7 +70,7 @@ void CsvWriters::write_run(std::uint32_t run, const scenario::ScenarioSpec& spec
       const ScanMetrics& m = metrics[i];
       metrics_ << r << ',' << k << ',' << num(m.ospa) << ',' << num(m.gospa) << ',' << m.truths << ','
                << m.confirmed << ',' << m.false_tracks << ',' << m.car_correct << ',' << m.car_total << ','
-               << num(i < latency_us.size() ? latency_us[i] : 0.0) << ',' << ev << '\n';
+               << m.car_id_correct << ',' << num(i < latency_us.size() ? latency_us[i] : 0.0) << ',' << ev << '\n';
     }
   }
   if (!truth_ || !measurements_ || !tracks_ || !metrics_) throw std::runtime_error("CSV write failed");
@@ -90,6 +90,8 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
   j["car"] = s.car;
   j["car_correct"] = s.car_correct;
   j["car_total"] = s.car_total;
+  j["car_identity"] = s.car_identity;
+  j["car_id_correct"] = s.car_id_correct;
   j["nft"] = s.nft;
   j["mean_confirmed_tracks"] = s.mean_confirmed_tracks;
   j["mean_truths"] = s.mean_truths;

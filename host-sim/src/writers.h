@@ -20,7 +20,7 @@ inline constexpr const char* kTruthCsvHeader = "run,scan,target_id,x,y,vx,vy,snr
 inline constexpr const char* kMeasurementsCsvHeader = "run,scan,range,azimuth,amplitude,origin";
 inline constexpr const char* kTracksCsvHeader = "run,scan,track_id,x,y,vx,vy,existence,snr,confirmed,eval";
 inline constexpr const char* kMetricsCsvHeader =
-    "run,scan,ospa,gospa,truths,confirmed,false_tracks,car_correct,car_total,latency_us,eval";
+    "run,scan,ospa,gospa,truths,confirmed,false_tracks,car_correct,car_total,car_id_correct,latency_us,eval";
 
 /// "target:<id>" or "clutter:<id>".
 std::string origin_label(const scenario::Origin& o);

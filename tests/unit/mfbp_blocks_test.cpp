@@ -396,3 +396,12 @@ TEST_CASE("mfbp Normal-Wishart update equals Bishop 10.60-10.63") {
   const auto pred = post.predicted(0.99, NwForgetting::kMeanPreserving);
   CHECK(pred.expected_covariance()(0, 0) == doctest::Approx(post.expected_covariance()(0, 0)).epsilon(1e-12));
 }
+
+TEST_CASE("mfbp cholesky_whiten is forward substitution: L^-1 b") {
+  // L = [[2, 0], [1, 3]], b = [4, 7]: y0 = 4 / 2 = 2, y1 = (7 - 1 * 2) / 3 = 5/3.
+  Eigen::Matrix2d L;
+  L << 2.0, 0.0, 1.0, 3.0;
+  const Eigen::Vector2d y = mfbp::cholesky_whiten<double, 2>(L, Eigen::Vector2d(4.0, 7.0));
+  CHECK(y(0) == 2.0);
+  CHECK(y(1) == doctest::Approx(5.0 / 3.0).epsilon(1e-15));
+}

@@ -87,6 +87,41 @@ TEST_CASE("sim metrics: OSPA, GOSPA, NFT and CAR on hand-computed geometry") {
   CHECK(e.car_total == 0);
 }
 
+TEST_CASE("sim identity CAR: a track keeps the label of its first match; coincident tracks keep theirs") {
+  sc::SimScan scan;
+  scan.scan = 1;
+  scan.truth = {truth(1, 0.0, 0.0, 0), truth(2, 1000.0, 0.0, 1)};
+  EstimateOut est;
+  est.scan = 1;
+  // Resolved: track 10 on target 1, track 11 on target 2, each on its own measurement.
+  est.tracks = {track(10, 0.0, 0.0, true, 0), track(11, 1000.0, 0.0, true, 1)};
+  ScanEvaluator ev;
+  ev.begin_run();
+  const ScanMetrics first = ev.evaluate(scan, est);
+  CHECK(first.car_correct == 2);
+  CHECK(first.car_id_correct == 2);
+
+  // Later the targets coincide (unresolved) and so do the tracks, each still on
+  // its own target's measurement. The per-scan OSPA assignment of two tracks at
+  // one point is arbitrary; the labels are not.
+  scan.scan = 2;
+  scan.truth = {truth(1, 500.0, 0.0, 0), truth(2, 500.0, 0.0, 1)};
+  est.tracks = {track(11, 500.0, 0.0, true, 1), track(10, 500.0, 0.0, true, 0)};
+  const ScanMetrics same = ev.evaluate(scan, est);
+  CHECK(same.car_id_correct == 2);
+
+  // Swapped measurements: each track took the other target's.
+  est.tracks = {track(11, 500.0, 0.0, true, 0), track(10, 500.0, 0.0, true, 1)};
+  const ScanMetrics swapped = ev.evaluate(scan, est);
+  CHECK(swapped.car_id_correct == 0);
+
+  // A new run forgets the labels: the first match labels again.
+  ev.begin_run();
+  const ScanMetrics relabelled = ev.evaluate(scan, est);
+  CHECK(relabelled.car_total == 2);
+  CHECK(relabelled.car_id_correct == relabelled.car_correct);
+}
+
 TEST_CASE("sim latency: nearest-rank percentiles") {
   std::vector<double> v;
   for (int i = 100; i >= 1; --i) v.push_back(i);

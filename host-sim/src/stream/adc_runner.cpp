@@ -172,6 +172,7 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
   auto fe = std::make_unique<FrontEnd>();
   Progress progress(sc.name + " " + cfg.tracker, static_cast<std::uint64_t>(cfg.runs) * n_frames, cfg.progress);
   for (std::uint32_t run = 0; run < cfg.runs; ++run) {
+    evaluator.begin_run();
     adc::FrameSynthesizer syn;
     if (syn.init(sc, cfg.seed, run) != Status::kOk) throw std::runtime_error(syn.error());
     if (fe->init(adc::frontend_params_for(sc)) != Status::kOk) throw std::runtime_error("front end init failed");
@@ -301,6 +302,7 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
       truths_sum += m.truths;
       sum.car_correct += m.car_correct;
       sum.car_total += m.car_total;
+      sum.car_id_correct += m.car_id_correct;
       for (const adc::EvalPhase& p : sc.phases) {
         if (k < p.first_frame || k > p.last_frame) continue;
         phase_sum[p.name] += m.ospa;
@@ -360,6 +362,8 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
   sum.mean_confirmed_tracks = confirmed_sum / n_eval;
   sum.mean_truths = truths_sum / n_eval;
   sum.car = sum.car_total > 0 ? static_cast<double>(sum.car_correct) / static_cast<double>(sum.car_total) : 0.0;
+  sum.car_identity =
+      sum.car_total > 0 ? static_cast<double>(sum.car_id_correct) / static_cast<double>(sum.car_total) : 0.0;
   sum.tracks_found_per_run = tracks_found_sum / static_cast<double>(cfg.runs);
   sum.mean_measurements = processed_total > 0 ? det_sum / static_cast<double>(processed_total) : 0.0;
   out.mean_detections = sum.mean_measurements;

@@ -32,6 +32,18 @@ bool cholesky(const Eigen::Matrix<T, N, N>& A, Eigen::Matrix<T, N, N>& L) {
 }
 
 /// X = A^-1 B given the Cholesky factor L of A (forward then back substitution).
+/// Forward substitution: L^-1 b (whitens b when L L^T is its covariance).
+template <class T, int N>
+Eigen::Matrix<T, N, 1> cholesky_whiten(const Eigen::Matrix<T, N, N>& L, const Eigen::Matrix<T, N, 1>& b) {
+  Eigen::Matrix<T, N, 1> y;
+  for (int i = 0; i < N; ++i) {
+    T s = b(i);
+    for (int k = 0; k < i; ++k) s -= L(i, k) * y(k);
+    y(i) = s / L(i, i);
+  }
+  return y;
+}
+
 template <class T, int N, int M>
 Eigen::Matrix<T, N, M> cholesky_solve(const Eigen::Matrix<T, N, N>& L, const Eigen::Matrix<T, N, M>& B) {
   Eigen::Matrix<T, N, M> X;

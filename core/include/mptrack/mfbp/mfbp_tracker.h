@@ -77,6 +77,7 @@ template <class T, class Caps = DefaultCaps>
 class MfbpTracker {
   static_assert(caps_are_valid<Caps>());
   static_assert(Caps::kMaxWindow <= 64, "visibility_forward_backward keeps 64 scans at most");
+  static_assert(Caps::kMaxTargets < 65535, "TrackSlot::mate is a 16-bit index");
 
  public:
   using Scalar = T;
@@ -246,6 +247,8 @@ class MfbpTracker {
     Mat4 P0 = Mat4::Identity();
     IG ig0{};
     T vis0 = T(0.5);
+    Vec2 bias0 = Vec2::Zero();    ///< faded whitened innovation before the window
+    T vis_emitted = T(1);         ///< b_s(1) at the last finalised scan reported on
     std::uint64_t t0_us = 0;
     // per window scan
     std::array<Vec4, kMaxWindow> xf{}, xs{};
@@ -257,6 +260,9 @@ class MfbpTracker {
     std::array<std::array<std::uint16_t, kMaxGate>, kMaxWindow> edge_meas{};
     std::array<std::array<T, kMaxGate>, kMaxWindow> edge_w{};
     std::array<std::int32_t, kMaxWindow> best{};
+    std::array<Vec2, kMaxWindow> biasf{};  ///< faded whitened innovation after the update at k
+    std::array<T, kMaxWindow> qk{};    ///< process noise used to predict into k [(m/s^2)^2]
+    std::array<std::uint16_t, kMaxWindow> mate{};  ///< nearest unresolved track + 1 (0: none)
   };
 
   struct CompSlot {
@@ -512,7 +518,6 @@ class MfbpTracker {
   void target_sweep(TrackSlot& t, std::size_t n) {
     const std::size_t f = t.first;
     if (f >= n) return;
-    const T q = params_.process_noise_var;
     const T tn = T(n_order_);
     for (std::size_t k = f; k < n; ++k) {
       Vec4 x;
@@ -522,8 +527,13 @@ class MfbpTracker {
         t.xf[k] = t.x0;
         t.Pf[k].set(t.P0);
         t.igf[k] = t.ig0;
+        t.biasf[k] = t.bias0;
+        t.qk[k] = params_.process_noise_var;
         continue;
       }
+      const Vec2 bias_prev = k == f ? t.bias0 : t.biasf[k - 1];
+      const T q = manoeuvre_noise(bias_prev);
+      t.qk[k] = q;
       if (k == f) {
         x = t.x0;
         P = t.P0;
@@ -535,39 +545,59 @@ class MfbpTracker {
         ig = t.igf[k - 1];
         note_repair(mfbp::cv_predict(x, P, dt_s(win(k - 1).time_us, win(k).time_us), q));
       }
+      Vec2 bias_k = bias_prev;
       ig = ig.predicted(params_.forgetting_target);
       const T w = T(1) - t.missed[k];
-      if (w > params_.w_min && t.n_edges[k] > 0) {
+      // [impl] pooled kinematics of an unresolved pair (unresolved_pooling).
+      const TrackSlot* mate = nullptr;
+      if (params_.unresolved_pooling && t.mate[k] > 0) {
+        const TrackSlot& m = tracks_[t.mate[k] - 1u];
+        if (m.alive && k >= m.first && m.n_edges[k] > 0) mate = &m;
+      }
+      if ((w > params_.w_min && t.n_edges[k] > 0) || mate != nullptr) {
         // Pseudo-measurement (P40): y_bar = z_ref + sum a_j wrap(y_j - z_ref) / w.
         const Vec2 z_ref = mfbp::polar_of_state<T>(x);
         Vec2 acc = Vec2::Zero();
         T w_sum = T(0);
         const ScanSlot& s = win(k);
-        for (std::size_t e = 0; e < t.n_edges[k]; ++e) {
-          const std::size_t j = t.edge_meas[k][e];
-          const T a = t.edge_w[k][e];
-          acc(0) += a * (s.r[j] - z_ref(0));
-          acc(1) += a * mfbp::wrap_angle(s.az[j] - z_ref(1));
-          w_sum += a;
+        const TrackSlot* pooled[2] = {&t, mate};
+        for (const TrackSlot* src : pooled) {
+          if (src == nullptr) continue;
+          for (std::size_t e = 0; e < src->n_edges[k]; ++e) {
+            const std::size_t j = src->edge_meas[k][e];
+            const T a = src->edge_w[k][e];
+            acc(0) += a * (s.r[j] - z_ref(0));
+            acc(1) += a * mfbp::wrap_angle(s.az[j] - z_ref(1));
+            w_sum += a;
+          }
         }
         if (w_sum > params_.w_min) {
           Vec2 y_bar = z_ref + acc / w_sum;
           y_bar(1) = mfbp::wrap_angle(y_bar(1));
           if (s.doppler) {
             T dop = T(0);
-            for (std::size_t e = 0; e < t.n_edges[k]; ++e) dop += t.edge_w[k][e] * s.dop[t.edge_meas[k][e]];
+            for (const TrackSlot* src : pooled) {
+              if (src == nullptr) continue;
+              for (std::size_t e = 0; e < src->n_edges[k]; ++e) {
+                dop += src->edge_w[k][e] * s.dop[src->edge_meas[k][e]];
+              }
+            }
             const Eigen::Matrix<T, 3, 1> y3(y_bar(0), y_bar(1), dop / w_sum);
             Eigen::Matrix<T, 3, 3> R3 = Eigen::Matrix<T, 3, 3>::Zero();
             R3(0, 0) = R_(0, 0) / w_sum;
             R3(1, 1) = R_(1, 1) / w_sum;
             R3(2, 2) = params_.sigma_doppler_mps * params_.sigma_doppler_mps / w_sum;
-            note_repair(mfbp::cubature_update_m<T, 3>(x, P, y3, R3));
+            Vec2 white = Vec2::Zero();
+            note_repair(mfbp::cubature_update_m<T, 3>(x, P, y3, R3, &white));
+            bias_k = fade_bias(bias_prev, white, w_sum);
           } else {
             const Mat2 R_bar = R_ / w_sum;
-            note_repair(mfbp::cubature_update(x, P, y_bar, R_bar));
+            Vec2 white = Vec2::Zero();
+            note_repair(mfbp::cubature_update(x, P, y_bar, R_bar, &white));
+            bias_k = fade_bias(bias_prev, white, w_sum);
           }
         }
-        if (params_.use_amplitude) {
+        if (params_.use_amplitude && w > params_.w_min) {
           if (params_.snr_update == SnrUpdate::kMf) {
             ig.update(tn * t.amp[k].w, tn * t.amp[k].s);
           } else if (t.amp[k].w > params_.w_min) {
@@ -578,6 +608,7 @@ class MfbpTracker {
       t.xf[k] = x;
       t.Pf[k].set(P);
       t.igf[k] = ig;
+      t.biasf[k] = bias_k;
     }
     // RTS backward (linear dynamics: URTSS reduces to RTS).
     t.xs[n - 1] = t.xf[n - 1];
@@ -586,7 +617,8 @@ class MfbpTracker {
     for (std::size_t kk = n - 1; kk-- > f;) {
       Mat4 Ps;
       note_repair(mfbp::rts_step(t.xf[kk], t.Pf[kk].get(), t.xs[kk + 1], Ps_next,
-                                 dt_s(win(kk).time_us, win(kk + 1).time_us), q, t.xs[kk], Ps));
+                                 dt_s(win(kk).time_us, win(kk + 1).time_us), t.qk[kk + 1],
+                                 t.xs[kk], Ps));
       t.Ps[kk].set(Ps);
       Ps_next = Ps;
     }
@@ -602,6 +634,39 @@ class MfbpTracker {
       if (params_.use_amplitude && params_.snr_update == SnrUpdate::kMf) s.update(tn * B.w, tn * B.s);
       t.igs[kk] = s;
     }
+  }
+
+  /// [impl, not in the paper] Manoeuvre-adaptive white-acceleration level,
+  /// from the innovation-mean test (Bar-Shalom, Li, Kirubarajan 2001,
+  /// sec. 5.4 and 11.3). bias is the faded mean u_bar of the whitened
+  /// pseudo-measurement innovations u = L^-1 e (S = L L^T); while the CV
+  /// model holds, u ~ N(0, I) and chi = |u_bar|^2 (1 + rho) / (2 (1 - rho))
+  /// is 1 on average. A per-scan NIS test is blind here: S1's turn leaves a
+  /// lag of ~0.5 sigma per scan, which only the mean over many scans shows.
+  /// Above 1 the level rises as chi^4 from process_noise_var (the paper's
+  /// quiet 0.01) to manoeuvre_noise_var_max (reached at chi = 3.2 with the
+  /// defaults), so one model follows the 0.33 m/s^2 turn and averages
+  /// 210-300 m cross-range noise down afterwards. The exponent and the
+  /// fading factor come from an S1 sweep (docs/results/seed000-s1.md).
+  T manoeuvre_noise(const Vec2& bias) const {
+    const T q0 = params_.process_noise_var;
+    const T rho = params_.manoeuvre_fading;
+    const T chi = bias.squaredNorm() * (T(1) + rho) / (T(2) * (T(1) - rho));
+    if (!(chi > T(1))) return q0;
+    const T chi2 = chi * chi;
+    const T q = q0 * chi2 * chi2;
+    return q < params_.manoeuvre_noise_var_max ? q : params_.manoeuvre_noise_var_max;
+  }
+
+  /// u_bar <- rho u_bar + (1 - rho) u; a pseudo-measurement of weight
+  /// w_sum < 1 moves it proportionally less.
+  Vec2 fade_bias(const Vec2& bias_prev, Vec2 white, T w_sum) const {
+    const T a = (T(1) - params_.manoeuvre_fading) * (w_sum < T(1) ? w_sum : T(1));
+    for (int i = 0; i < 2; ++i) {  // a wild outlier only saturates
+      if (!(white(i) < T(100))) white(i) = T(100);
+      if (!(white(i) > T(-100))) white(i) = T(-100);
+    }
+    return bias_prev + a * (white - bias_prev);
   }
 
   void note_repair(bool repaired) {
@@ -635,6 +700,46 @@ class MfbpTracker {
     const Vec2 e_bar = acc / w_sum;  // y_bar - z_hat (azimuth wrapped)
     (void)mfbp::remove_pseudo_measurement(z_hat, Sz, e_bar, w_sum,
                                           Vec2(R_inv_(0, 0), R_inv_(1, 1)));
+  }
+
+  /// [impl, not in the paper] Tracks whose predicted measurements are
+  /// statistically indistinguishable, (z_a - z_b)^T (Sz_a + Sz_b)^-1
+  /// (z_a - z_b) < unresolved_chi2, score measurements against their common
+  /// mean (the plain average over the track and such neighbours), so that
+  /// position alone never decides which of them takes which measurement:
+  /// amplitude, Doppler and visibility still do. Without it, on S1's
+  /// unresolved pair (20 m apart, 210-300 m cross-range noise) the track
+  /// that drifted left takes the left measurements, an outward pull that
+  /// cancels the measurement's restoring pull (loop gain 1 with (P79),
+  /// 1 - K^2 even with the predictive density), and the tracks drift ~200 m apart
+  /// (docs/results/seed000-s1.md). Each track still updates on its own
+  /// pseudo-measurement. O(tracks^2) 2x2 tests per associated scan.
+  void couple_unresolved(std::size_t k) {
+    for (std::size_t a = 0; a < kMaxTargets; ++a) {
+      TrackMoments& ma = moments_[a];
+      if (!ma.ok) continue;
+      Vec2 sum = ma.z;
+      T count = T(1);
+      T nearest = params_.unresolved_chi2;
+      for (std::size_t b = 0; b < kMaxTargets; ++b) {
+        const TrackMoments& mb = moments_[b];
+        if (b == a || !mb.ok) continue;
+        const Vec2 e(mb.z(0) - ma.z(0), mfbp::wrap_angle(mb.z(1) - ma.z(1)));
+        const Mat2 C = ma.Sz + mb.Sz;
+        const T det = C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0);
+        if (!(det > T(0))) continue;
+        const T d2 = (C(1, 1) * e(0) * e(0) - T(2) * C(0, 1) * e(0) * e(1) + C(0, 0) * e(1) * e(1)) / det;
+        if (!(d2 < params_.unresolved_chi2)) continue;
+        sum += Vec2(ma.z(0) + e(0), ma.z(1) + e(1));
+        count += T(1);
+        if (d2 < nearest) {
+          nearest = d2;
+          tracks_[a].mate[k] = static_cast<std::uint16_t>(b + 1);
+        }
+      }
+      ma.z_shared = sum / count;
+      ma.z_shared(1) = mfbp::wrap_angle(ma.z_shared(1));
+    }
   }
 
   /// Does track t take part in the association of window scan k?
@@ -742,11 +847,13 @@ class MfbpTracker {
       }
     }
 
-    // --- target evidence
-    std::array<std::size_t, kMaxTargets> bp_track{};
-    std::size_t nbt = 0;
+    // --- target evidence: predicted measurement moments of every track
+    // first, so that unresolved tracks can share them (couple_unresolved).
     for (std::size_t i = 0; i < kMaxTargets; ++i) {
       TrackSlot& t = tracks_[i];
+      TrackMoments& mo = moments_[i];
+      mo.ok = false;
+      t.mate[k] = 0;
       if (!participates(t, k)) continue;
       // Moments of [range, azimuth, radial velocity]; the Doppler row is
       // used only when the scan has it.
@@ -758,9 +865,27 @@ class MfbpTracker {
         note_repair(mfbp::make_spd(P_k));
         if (!mfbp::cubature_moments<T, 3>(t.xs[k], P_k, z3, S3, C3)) continue;
       }
-      Vec2 z_hat = z3.template head<2>();
-      Mat2 Sz = S3.template topLeftCorner<2, 2>();
-      if (params_.association_cavity) cavity_moments(t, k, z_hat, Sz);
+      mo.z = z3.template head<2>();
+      mo.Sz = S3.template topLeftCorner<2, 2>();
+      mo.z_dop = z3(2);
+      mo.var_dop = S3(2, 2);
+      if (params_.association_cavity) cavity_moments(t, k, mo.z, mo.Sz);
+      mo.ok = true;
+    }
+    if (params_.unresolved_chi2 > T(0)) {
+      couple_unresolved(k);
+    } else {
+      for (auto& mo : moments_) mo.z_shared = mo.z;
+    }
+
+    std::array<std::size_t, kMaxTargets> bp_track{};
+    std::size_t nbt = 0;
+    for (std::size_t i = 0; i < kMaxTargets; ++i) {
+      TrackSlot& t = tracks_[i];
+      const TrackMoments& mo = moments_[i];
+      if (!mo.ok) continue;
+      const Vec2& z_hat = mo.z_shared;
+      const Mat2& Sz = mo.Sz;
       const T var_d = params_.sigma_doppler_mps * params_.sigma_doppler_mps;
       const Mat2 S = Sz + R_;
       const T det_s = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0);
@@ -784,8 +909,8 @@ class MfbpTracker {
           // N(d; z_d, S_dd + sigma_d^2) rather than the MF expectation, whose
           // -S_dd / (2 sigma_d^2) term rejects every association of a young
           // track (velocity spread >> sigma_d) and so would never let it learn.
-          const T ed = s.dop[j] - z3(2);
-          const T var = var_d + S3(2, 2);
+          const T ed = s.dop[j] - mo.z_dop;
+          const T var = var_d + mo.var_dop;
           v += -T(0.5) * (T(1.8378770664093453) + dmath::dlog(var)) - T(0.5) * ed * ed / var;
         }
         if (amp) {
@@ -1276,9 +1401,12 @@ class MfbpTracker {
     est.time_us = win(k).time_us;
     est.scan_index = static_cast<std::uint32_t>(finalized_);
     ++finalized_;
-    for (const auto& t : tracks_) {
+    for (auto& t : tracks_) {
       if (!t.alive || k < t.first || !t.confirmed) continue;
-      if (t.vis[k] < params_.report_existence_min) continue;
+      // [impl] One missed scan is tolerated (report_existence_min).
+      const T vis_prev = t.vis_emitted;
+      t.vis_emitted = t.vis[k];
+      if (t.vis[k] < params_.report_existence_min && vis_prev < params_.report_existence_min) continue;
       TrackReport<T> r;
       r.id = t.id;
       r.state = t.xs[k];
@@ -1341,6 +1469,7 @@ class MfbpTracker {
         t.P0 = t.Pf[last].get();
         t.ig0 = t.igf[last];
         t.vis0 = t.visf[last];
+        t.bias0 = t.biasf[last];
         t.t0_us = win(last).time_us;
         t.first = 0;
         t.from_birth = false;
@@ -1354,6 +1483,7 @@ class MfbpTracker {
         t.xi1[d] = t.xi1[k]; t.xi0[d] = t.xi0[k]; t.visf[d] = t.visf[k]; t.vis[d] = t.vis[k];
         t.extr[d] = t.extr[k]; t.missed[d] = t.missed[k]; t.n_edges[d] = t.n_edges[k];
         t.edge_meas[d] = t.edge_meas[k]; t.edge_w[d] = t.edge_w[k]; t.best[d] = t.best[k];
+        t.mate[d] = t.mate[k]; t.biasf[d] = t.biasf[k]; t.qk[d] = t.qk[k];
       }
     }
     if (params_.clutter_mode != ClutterMode::kKnown) {
@@ -1416,6 +1546,17 @@ class MfbpTracker {
   std::array<std::array<T, kSources>, kMaxWindow> alpha_f_{}, alpha_s_{};
   std::array<T, kMaxWindow> m_{};
   T m_prev_ = T(30);
+
+  /// Predicted measurement moments of each track on the scan being associated.
+  struct TrackMoments {
+    Vec2 z = Vec2::Zero();         ///< [range m, azimuth rad] (cavity if association_cavity)
+    Vec2 z_shared = Vec2::Zero();  ///< z, or the common mean of unresolved tracks
+    Mat2 Sz = Mat2::Zero();        ///< its covariance (without R)
+    T z_dop = T(0);                ///< predicted radial velocity [m/s]
+    T var_dop = T(0);              ///< its variance [(m/s)^2]
+    bool ok = false;               ///< participates and the moments exist
+  };
+  std::array<TrackMoments, kMaxTargets> moments_{};
 
   Bp bp_{};
   mfbp::SeedGrid<kMaxGridCells> grid_{};

@@ -101,9 +101,12 @@ bool cv_predict(Vec4<T>& x, Mat4<T>& P, T dt_s, T q) {
 /// (spec 3.9, (P40)); M = 2 (range, azimuth) or 3 (+ Doppler). x, P are
 /// the prediction on input, the posterior on output. Returns true if a
 /// numerical repair was needed.
+/// If white is given it receives the whitened innovation L^-1 e, S = L L^T
+/// (its first two rows, range and azimuth, do not depend on a Doppler row;
+/// untouched when the update fails).
 template <class T, int M>
 bool cubature_update_m(Vec4<T>& x, Mat4<T>& P, const Eigen::Matrix<T, M, 1>& y_bar,
-                       const Eigen::Matrix<T, M, M>& R_bar) {
+                       const Eigen::Matrix<T, M, M>& R_bar, Vec2<T>* white = nullptr) {
   using VecM = Eigen::Matrix<T, M, 1>;
   using MatM = Eigen::Matrix<T, M, M>;
   using Mat4M = Eigen::Matrix<T, 4, M>;
@@ -120,6 +123,7 @@ bool cubature_update_m(Vec4<T>& x, Mat4<T>& P, const Eigen::Matrix<T, M, 1>& y_b
   const Mat4M K = Kt.transpose();
   VecM e = y_bar - z_hat;
   e(1) = wrap_angle(e(1));
+  if (white != nullptr) *white = cholesky_whiten<T, M>(L, e).template head<2>();
   x += K * e;
   P -= K * S * K.transpose();
   repaired = make_spd(P) || repaired;
@@ -128,8 +132,9 @@ bool cubature_update_m(Vec4<T>& x, Mat4<T>& P, const Eigen::Matrix<T, M, 1>& y_b
 
 /// The 2-row (range, azimuth) update.
 template <class T>
-bool cubature_update(Vec4<T>& x, Mat4<T>& P, const Vec2<T>& y_bar, const Mat2<T>& R_bar) {
-  return cubature_update_m<T, 2>(x, P, y_bar, R_bar);
+bool cubature_update(Vec4<T>& x, Mat4<T>& P, const Vec2<T>& y_bar, const Mat2<T>& R_bar,
+                     Vec2<T>* white = nullptr) {
+  return cubature_update_m<T, 2>(x, P, y_bar, R_bar, white);
 }
 
 /// One RTS step (spec 3.9): from the filtered (xf, Pf) at k and the smoothed
