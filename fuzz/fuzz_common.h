@@ -102,23 +102,34 @@ inline float special_float(std::uint8_t k) {
 }
 
 /// Next scan time: mostly forward, sometimes equal, backwards or a jump.
-/// Jumps stay <= 60 s unless MPTRACK_FUZZ_KNOWN_ISSUES is defined: longer gaps
-/// hit a known issue (docs/reliability.md, finding F1: after a gap of
-/// ~1000 s the float CV covariance is singular to working precision), which
-/// would otherwise mask everything else.
+/// Input shapes a harness may still mask for a tracker that has not got
+/// the fix yet (docs/reliability.md). GNN, GM-PHD/CPHD and CBMeMBer take
+/// everything since F1 (max-gap rule) and F4/F8 (amplitude ceiling, CPHD
+/// ratio cap). MF-BP (fuzz_mfbp.cpp) masks both until mfbp_tracker.h uses
+/// ScanClock's max-gap rule and an amplitude ceiling; defining
+/// MPTRACK_FUZZ_KNOWN_ISSUES lifts every mask.
+struct DecodeMasks {
+  bool short_gaps = false;        ///< time jumps stay within 60 s
+  bool moderate_amplitude = false;  ///< finite amplitudes capped at 1e3
+};
+inline DecodeMasks g_masks{};
+
+/// Next scan time: usually forward by 1..200 ms, sometimes equal, back,
+/// a jump of up to 18 h, or any 64-bit value.
 inline std::uint64_t next_time_us(FuzzReader& in, std::uint64_t last) {
   const std::uint8_t mode = in.u8();
   if (mode < 200) return last + 1000u * (1u + mode);                       // 1..200 ms
   if (mode < 215) return last;                                             // equal
   if (mode < 230) return last - (last < 1000000u ? last : 1000000u);      // back <= 1 s
-#if defined(MPTRACK_FUZZ_KNOWN_ISSUES)
+#if !defined(MPTRACK_FUZZ_KNOWN_ISSUES)
+  if (g_masks.short_gaps) {
+    if (mode < 245) return last + 1000u * (1u + in.u16() % 60000u);       // jump <= 60 s
+    const std::uint64_t back = last < 60000000u ? last : 60000000u;
+    return last - back + in.u32() % 120000000u;  // within 60 s either way
+  }
+#endif
   if (mode < 245) return last + 1000000u * (1u + in.u16());               // jump <= 18 h
   return in.u64();                                                         // anything
-#else
-  if (mode < 245) return last + 1000u * (1u + in.u16() % 60000u);         // jump <= 60 s
-  const std::uint64_t back = last < 60000000u ? last : 60000000u;
-  return last - back + in.u32() % 120000000u;  // within 60 s either way
-#endif
 }
 
 /// Decodes one scan of at most Cap measurements. prev is the previous
@@ -143,7 +154,9 @@ void decode_scan(FuzzReader& in, const Region& reg, const ScanT& prev, std::uint
       m.amplitude = in.raw_float();
       m.doppler_mps = in.raw_float();
 #if !defined(MPTRACK_FUZZ_KNOWN_ISSUES)
-      if (is_finite(m.amplitude) && m.amplitude > 1e3f) m.amplitude = 1e3f;  // findings F4, F8
+      if (g_masks.moderate_amplitude && is_finite(m.amplitude) && m.amplitude > 1e3f) {
+        m.amplitude = 1e3f;
+      }
 #endif
     } else if (kind < 32) {  // one special value in one field of a sane point
       m.range_m = reg.r_min_m + 0.5f * span_r;
@@ -151,9 +164,7 @@ void decode_scan(FuzzReader& in, const Region& reg, const ScanT& prev, std::uint
       m.amplitude = 3.0f;
       float v = special_float(in.u8());
 #if !defined(MPTRACK_FUZZ_KNOWN_ISSUES)
-      // A finite amplitude of 3.4e38 corrupts the GM-PHD/CPHD clutter
-      // estimate (known issue, docs/reliability.md finding F4).
-      if (kind % 4u == 2 && v > 1e30f) v = 1e3f;
+      if (g_masks.moderate_amplitude && kind % 4u == 2 && v > 1e30f) v = 1e3f;
 #endif
       switch (kind % 4u) {
         case 0: m.range_m = v; break;

@@ -86,19 +86,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::uint32_t bits = 0;
         std::memcpy(&bits, data + (size - avail) + k, 4);
         std::memcpy(&f, &bits, 4);
-#if !defined(MPTRACK_FUZZ_KNOWN_ISSUES)
-        // Finite samples beyond +-1e6 overflow the float power map to Inf
-        // (known issue, docs/reliability.md finding F2); keep NaN/Inf, which
-        // must be rejected, and fold huge finite values into range.
-        if (mptrack::is_finite(f) && (f > 1e6f || f < -1e6f)) f *= 1e-32f;
-#endif
+        // Half of the float cubes fold huge finite values into range, so
+        // that frames both beyond max_abs_sample (refused, F2) and just
+        // inside it (F3: amplitudes at the noise floor) are explored.
+        if ((mode & 2u) != 0 && mptrack::is_finite(f) && (f > 1e6f || f < -1e6f)) f *= 1e-32f;
       }
       g_cubef.iq[i] = f;
     }
     s = g_fe.process(g_cubef, g_scan);
   }
+  // kPartial: saturated int16 frame or a detection dropped for a
+  // non-finite amplitude (F3); kInvalidInput: NaN/Inf, beyond the sample
+  // ceiling (F2) or all zero.
   FUZZ_CHECK(s == mptrack::Status::kOk || s == mptrack::Status::kCapacityExceeded ||
-             s == mptrack::Status::kInvalidInput);
+             s == mptrack::Status::kInvalidInput || s == mptrack::Status::kPartial);
   if (s == mptrack::Status::kInvalidInput) FUZZ_CHECK(g_scan.measurements.empty());
   FUZZ_CHECK(g_scan.measurements.size() <= 6);
   for (const auto& m : g_scan.measurements) {
@@ -109,16 +110,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     FUZZ_CHECK(mptrack::is_finite(m.range_m) && m.range_m >= 0.0f);
     FUZZ_CHECK(mptrack::is_finite(m.azimuth_rad));
-#if defined(MPTRACK_FUZZ_KNOWN_ISSUES)
     FUZZ_CHECK(mptrack::is_finite(m.amplitude) && m.amplitude >= 0.0f);
-#else
-    // +Inf when the CFAR noise estimate sits at the floor (finding F3).
-    FUZZ_CHECK(!(m.amplitude != m.amplitude) && m.amplitude >= 0.0f);
-#endif
     FUZZ_CHECK(mptrack::is_finite(m.doppler_mps));
   }
   const auto& c = g_fe.counters();
   FUZZ_CHECK(c.frames + c.frames_rejected == before.frames + before.frames_rejected + 1);
+  // the status tells which frame-level check fired, and the counter agrees
+  const bool all_zero = c.frames_all_zero != before.frames_all_zero;
+  const bool over = c.frames_over_ceiling != before.frames_over_ceiling;
+  const bool saturated = c.frames_saturated != before.frames_saturated;
+  const bool nonfinite = c.detections_nonfinite != before.detections_nonfinite;
+  if (all_zero || over) FUZZ_CHECK(s == mptrack::Status::kInvalidInput);
+  if (s == mptrack::Status::kPartial) FUZZ_CHECK(saturated || nonfinite);
+  if (saturated || nonfinite) {
+    FUZZ_CHECK(s == mptrack::Status::kPartial || s == mptrack::Status::kCapacityExceeded);
+  }
+  if ((mode & 1u) == 0 && (mode >> 1) % 4u == 1) FUZZ_CHECK(all_zero);
   FUZZ_CHECK(c.detections - before.detections == g_scan.measurements.size());
   return 0;
 }

@@ -110,15 +110,7 @@ void fuzz_gnn(FuzzReader& in) {
   mutate(in, p.init_velocity_std_mps); mutate(in, p.gate_chi2); mutate(in, p.confirm_hits);
   mutate(in, p.confirm_window); mutate(in, p.max_misses); mutate(in, p.report_tentative);
   mutate(in, p.min_range_m); mutate(in, p.max_range_m); mutate(in, p.min_azimuth_rad);
-  mutate(in, p.max_azimuth_rad); mutate(in, p.min_variance);
-#if !defined(MPTRACK_FUZZ_KNOWN_ISSUES)
-  // Accepted standard deviations whose square overflows or underflows
-  // (known issue F12).
-  if (!(p.init_velocity_std_mps < 1e6f && p.sigma_range_m < 1e6f && p.accel_std_mps2 < 1e6f &&
-        p.sigma_range_m > 1e-6f && p.sigma_azimuth_rad > 1e-9f)) {
-    return;
-  }
-#endif
+  mutate(in, p.max_azimuth_rad); mutate(in, p.min_variance); mutate(in, p.max_gap_s);
   if (g_gnn.init(p) != Status::kOk) return;
   run_scans(g_gnn, p.min_range_m, p.max_range_m, p.min_azimuth_rad, p.max_azimuth_rad);
 }
@@ -155,15 +147,6 @@ void fuzz_mfbp(FuzzReader& in) {
   mutate(in, p.clutter_cell_az_rad); mutate(in, p.clutter_seed_factor);
   mutate(in, p.clutter_death_count); mutate(in, p.clutter_death_windows);
   if (p.bp_max_iterations > 200) return;  // time bound only (valid, but slow)
-#if !defined(MPTRACK_FUZZ_KNOWN_ISSUES)
-  // Seed-grid sizes beyond size_t (known issues, docs/reliability.md F5, F9).
-  if (!((p.r_max_m - p.r_min_m) / p.clutter_cell_range_m < 1e9f) ||
-      !((p.az_max_rad - p.az_min_rad) / p.clutter_cell_az_rad < 1e9f) ||
-      !(p.clutter_seed_factor < 1e6f) ||  // F9: seed threshold overflows to Inf ...
-      !((p.r_max_m - p.r_min_m) * (p.az_max_rad - p.az_min_rad) > 1e-3f)) {  // ... or a tiny region
-    return;
-  }
-#endif
   if (g_mfbp.init(p) != Status::kOk) return;
   run_scans(g_mfbp, p.r_min_m, p.r_max_m, p.az_min_rad, p.az_max_rad);
 }
@@ -183,11 +166,7 @@ void fuzz_filter_params(FuzzReader& in, std::uint8_t which) {
   mutate(in, p.hotspot_min_points); mutate(in, p.hotspot_min_rate); mutate(in, p.prune_threshold);
   mutate(in, p.merge_threshold); mutate(in, p.merge_threshold_power); mutate(in, p.gate_probability);
   mutate(in, p.extract_threshold); mutate(in, p.existence_prune); mutate(in, p.existence_extract);
-#if !defined(MPTRACK_FUZZ_KNOWN_ISSUES)
-  // A region whose volume overflows (e.g. region_max0 = 3.4e38) is accepted
-  // and makes the clutter intensity NaN (known issue F10).
-  if (!mptrack::is_finite(p.region_volume())) return;
-#endif
+  mutate(in, p.max_gap_s); mutate(in, p.max_amplitude);
   switch (which % 3u) {
     case 0:
       if (g_phd.init(p) != Status::kOk) return;
@@ -217,12 +196,15 @@ void fuzz_frontend_params(FuzzReader& in) {
   mutate_enum(in, p.cfar.type); mutate_enum(in, p.cfar.edge); mutate(in, p.cfar.guard_cells);
   mutate(in, p.cfar.training_cells); mutate(in, p.cfar.pfa); mutate(in, p.cfar.os_rank);
   mutate(in, p.max_detections); mutate(in, p.min_noise_power); mutate(in, p.angle_refine_iterations);
+  mutate(in, p.max_abs_sample); mutate(in, p.saturation_fraction);
   if (g_fe.init(p) != Status::kOk) return;
   for (std::size_t i = 0; i < g_cube.iq.size(); ++i) {
     g_cube.iq[i] = static_cast<std::int16_t>((i * 7919u) % 2001u) - 1000;  // busy, deterministic
   }
   const Status s = g_fe.process(g_cube, g_fe_scan);
-  FUZZ_CHECK(s == Status::kOk || s == Status::kCapacityExceeded);
+  // kPartial: a detection dropped for a non-finite amplitude (F3); the
+  // busy cube (|code| <= 1000) is never saturated or all zero
+  FUZZ_CHECK(s == Status::kOk || s == Status::kCapacityExceeded || s == Status::kPartial);
   for (const auto& m : g_fe_scan.measurements) {
     FUZZ_CHECK(mptrack::is_finite(m.range_m) && mptrack::is_finite(m.azimuth_rad) &&
                mptrack::is_finite(m.amplitude) && mptrack::is_finite(m.doppler_mps));

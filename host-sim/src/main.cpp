@@ -352,6 +352,7 @@ int main(int argc, char** argv) {
       a.csv_runs = csv_runs;
       a.plot = !no_plot;
       a.progress = !no_progress;
+      a.mfbp_params = mfbp_params;
       return mptrack::sim::run_adc_cli(a);
     }
     if (demo->parsed()) {

@@ -204,6 +204,7 @@ TEST_CASE("frontend: stage times come from the caller's clock") {
   REQUIRE(rig->fe.init(seed_params()) == Status::kOk);
   fe::FrontEndStageTimes times;
   times.clock = &fake_clock;
+  rig->cube.iq[0] = 1e-3f;  // an all-zero frame is refused before any stage runs
   REQUIRE(rig->fe.process(rig->cube, rig->scan, &times) == Status::kOk);
   for (std::uint32_t t : times.ticks) CHECK(t == 10u);
 }
@@ -252,4 +253,90 @@ TEST_CASE("frontend: the large configuration (12 channels x 256 x 128 chirps) fi
   CHECK(std::fabs(dbl(m.range_m) - 212.0) < 1.0);
   CHECK(std::fabs(dbl(m.azimuth_rad) - (M_PI / 2 - 0.35)) < 0.03);
   CHECK(std::fabs(dbl(m.doppler_mps) - t.radial_mps) < 0.2 * bin);
+}
+
+namespace {
+
+template <class Caps>
+struct Int16Rig {
+  fe::FrontEnd<Caps> fe;
+  fe::RadarCubeInt16<Caps> cube;
+  mptrack::Scan<float, Caps::kMaxDetections> scan;
+};
+
+// An int16 frame with one target at 60 m in noise, well below full
+// scale: the float synthesizer's cube quantised to codes (x 32768).
+template <class Caps>
+void fill_target(const fe::FrontEndParams& p, fe::RadarCubeInt16<Caps>& cube) {
+  auto f = std::make_unique<fe::RadarCube<Caps>>();
+  mptrack::test::SynthTarget t;
+  t.range_m = 60.0;
+  t.amplitude = 0.02;
+  mptrack::test::synthesize<Caps>(p, &t, 1, 1e-4, 7, *f);
+  for (std::size_t i = 0; i < cube.iq.size(); ++i) {
+    cube.iq[i] = static_cast<std::int16_t>(std::lround(static_cast<double>(f->iq[i]) * 32768.0));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("frontend: an all-zero int16 frame is refused as kInvalidInput and counted") {
+  auto rig = std::make_unique<Int16Rig<Small>>();
+  REQUIRE(rig->fe.init(mptrack::test::small_doppler_params()) == Status::kOk);
+  rig->cube.iq.fill(0);
+  CHECK(rig->fe.process(rig->cube, rig->scan) == Status::kInvalidInput);
+  CHECK(rig->scan.measurements.empty());
+  CHECK(rig->fe.counters().frames_all_zero == 1);
+  CHECK(rig->fe.counters().frames_rejected == 1);
+  CHECK(rig->fe.counters().frames == 0);
+  rig->cube.iq[5] = 1;  // one non-zero code: processed
+  CHECK(rig->fe.process(rig->cube, rig->scan) == Status::kOk);
+  CHECK(rig->fe.counters().frames_all_zero == 1);
+  CHECK(rig->fe.counters().frames == 1);
+}
+
+TEST_CASE("frontend: an all-zero float frame is refused too") {
+  auto rig = std::make_unique<Rig<Small>>();
+  REQUIRE(rig->fe.init(mptrack::test::small_doppler_params()) == Status::kOk);
+  CHECK(rig->fe.process(rig->cube, rig->scan) == Status::kInvalidInput);
+  CHECK(rig->fe.counters().frames_all_zero == 1);
+}
+
+TEST_CASE("frontend: a saturated int16 frame is processed, flagged kPartial and counted") {
+  auto rig = std::make_unique<Int16Rig<Small>>();
+  fe::FrontEndParams p = mptrack::test::small_doppler_params();
+  p.saturation_fraction = 0.01;
+  REQUIRE(rig->fe.init(p) == Status::kOk);
+  fill_target<Small>(p, rig->cube);
+  const std::size_t n = rig->cube.iq.size();
+  const std::size_t limit = n / 100;  // 1 %: at the limit is not saturated
+  for (std::size_t i = 0; i < limit; ++i) rig->cube.iq[i * 97u % n] = (i % 2u) ? 32767 : -32768;
+  const Status at_limit = rig->fe.process(rig->cube, rig->scan);
+  CHECK((at_limit == Status::kOk || at_limit == Status::kCapacityExceeded));
+  CHECK(rig->fe.counters().frames_saturated == 0);
+  CHECK_FALSE(rig->scan.measurements.empty());
+  // well above the limit: 10 % of the codes at full scale
+  for (std::size_t i = 0; i < n; i += 10u) rig->cube.iq[i] = (i % 20u) ? 32767 : -32768;
+  const Status s = rig->fe.process(rig->cube, rig->scan);
+  CHECK(s == Status::kPartial);
+  CHECK(rig->fe.counters().frames_saturated == 1);
+  CHECK(rig->fe.counters().frames == 2);
+  CHECK_FALSE(rig->scan.measurements.empty());  // still processed
+  for (const auto& m : rig->scan.measurements) CHECK(mptrack::is_finite(m.amplitude));
+}
+
+TEST_CASE("frontend: max_abs_sample and saturation_fraction are validated") {
+  auto rig = std::make_unique<Rig<Small>>();
+  fe::FrontEndParams p = mptrack::test::small_doppler_params();
+  p.max_abs_sample = 0.0;
+  CHECK(rig->fe.init(p) == Status::kInvalidArgument);
+  p.max_abs_sample = 1e30;
+  CHECK(rig->fe.init(p) == Status::kInvalidArgument);
+  p.max_abs_sample = 1e6;
+  p.saturation_fraction = 1.5;
+  CHECK(rig->fe.init(p) == Status::kInvalidArgument);
+  p.saturation_fraction = std::numeric_limits<double>::quiet_NaN();
+  CHECK(rig->fe.init(p) == Status::kInvalidArgument);
+  p.saturation_fraction = 0.0;
+  CHECK(rig->fe.init(p) == Status::kOk);
 }

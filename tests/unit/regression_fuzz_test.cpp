@@ -1,13 +1,13 @@
-// Regression tests for the fuzz findings of docs/reliability.md (F1-F9).
+// Regression tests for the fuzz findings of docs/reliability.md (F1-F12).
 // Each test rebuilds the fuzzer's input by hand (values from the harness's
 // MPTRACK_FUZZ_TRACE=1 output; the raw crash inputs are in fuzz/corpus/) and
-// asserts the documented behaviour. Findings in code owned by another
-// engineer and not fixed yet are marked doctest::skip(): remove the skip
-// with the fix. The fixed ones (F6) run normally.
+// asserts the documented behaviour. Every finding is fixed and its test
+// runs; F11 (duplicates) is in validation_trackers_test.cpp.
 #include <doctest/doctest.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 
@@ -17,6 +17,7 @@
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/phd/phd_filter.h"
+#include "frontend_test_signals.h"
 
 using mptrack::Status;
 
@@ -27,6 +28,17 @@ struct FuzzIggmCaps {  // the caps of fuzz/fuzz_iggm.cpp
   static constexpr std::size_t kMaxMeasurements = 16;
   static constexpr std::size_t kMaxClutterComponents = 2;
   static constexpr std::size_t kMaxWindow = 1;
+};
+
+struct FuzzRadarCaps {  // the caps of fuzz/fuzz_frontend.cpp
+  static constexpr std::size_t kNumTx = 1;
+  static constexpr std::size_t kNumRx = 2;
+  static constexpr std::size_t kNumSamples = 16;
+  static constexpr std::size_t kRangeFftSize = 16;
+  static constexpr std::size_t kNumRangeBins = 8;
+  static constexpr std::size_t kNumChirps = 4;
+  static constexpr std::size_t kNumAngleBins = 4;
+  static constexpr std::size_t kMaxDetections = 8;
 };
 
 mptrack::Measurement<float> meas(float r, float az, float amp, float dop = 0.0f) {
@@ -61,14 +73,12 @@ TEST_CASE("F6 (fixed): chirp_samples maps NaN and huge products to 0 instead of 
   CHECK_FALSE(fe.initialized());
 }
 
-TEST_CASE("F1: a GNN track keeps an SPD covariance (float LLT) after a 2000 s scan gap" *
-          doctest::skip()) {
+TEST_CASE("F1: a 2000 s scan gap drops the GNN track (max-gap rule) instead of a singular covariance") {
   // Fuzz: time jump of ~1000 s (fuzz_common.h next_time_us, long-gap mode).
-  // cv_predict adds q dt^4/4 ~ 4e12 m^2 and P(x, vx) ~ 1e17: the float
-  // matrix is singular to working precision, keep_spd()'s own Cholesky
-  // still accepts it, Eigen's LLT<Matrix4f> does not. Suggested fix: a
-  // max-gap policy in ScanClock (delete or re-initialise tracks after a gap
-  // longer than N scan periods, counted).
+  // cv_predict added q dt^4/4 ~ 4e12 m^2 and P(x, vx) ~ 1e17: the float
+  // matrix was singular to working precision. Fix: the max-gap rule of
+  // ScanClock (GnnParams::max_gap_s = 60 s): the track is dropped and
+  // counted, and the scan starts a new run.
   auto trk = std::make_unique<mptrack::GnnTracker<float, mptrack::SmallBoardCaps>>();
   mptrack::GnnParams<float> p;
   p.report_tentative = true;
@@ -78,21 +88,33 @@ TEST_CASE("F1: a GNN track keeps an SPD covariance (float LLT) after a 2000 s sc
   REQUIRE(s.measurements.push_back(meas(50.0f, 0.3f, 10.0f)) == Status::kOk);
   REQUIRE(trk->step(s) == Status::kOk);
   s.time_us += 2000000000u;  // + 2000 s
-  s.measurements.clear();
+  REQUIRE(trk->step(s) == Status::kOk);
+  CHECK(trk->counters().gap_resets == 1);
+  CHECK(trk->counters().tracks_deleted == 1);
+  REQUIRE(trk->outputs()[0].tracks.size() == 1);  // the new tentative track
+  CHECK(trk->outputs()[0].tracks[0].id == 2);
+  CHECK(llt_ok(trk->outputs()[0].tracks[0].covariance));
+  s.time_us += 100000u;  // the new run goes on normally
   REQUIRE(trk->step(s) == Status::kOk);
   REQUIRE(trk->outputs()[0].tracks.size() == 1);
+  CHECK(trk->outputs()[0].tracks[0].id == 2);
   CHECK(llt_ok(trk->outputs()[0].tracks[0].covariance));
 }
 
-TEST_CASE("F8: GM-CPHD (known uniform clutter) keeps finite weights across a 23.8 s scan gap" *
-          doctest::skip()) {
+TEST_CASE("F8: GM-CPHD (known uniform clutter) keeps finite weights across a 23.8 s scan gap") {
   // Fuzz (fuzz_iggm, crash-66d0e897): the second scan with a gated
   // measurement after a 23.8 s gap makes a component weight +Inf;
   // extract() then casts Inf to size_t (UBSan: phd_filter.h:302).
+  // Cause: the amplitude 1e6 measurement has ln kappa(z) ~ -1e12 under the
+  // known clutter scale, so ln R'_z ~ 1e12 and the CPHD factors cancel to
+  // nothing in float. Fix: ln R'_z capped at 200 (phd_filter.h,
+  // cphd_factors). The amplitude ceiling (F4) would reject 1e6 by default,
+  // so it is raised here to reach the cause.
   using Filter = mptrack::phd::GmCphdFilter<float, FuzzIggmCaps>;
   auto f = std::make_unique<Filter>();
   mptrack::phd::FilterParams<float> p;
   p.clutter_mode = mptrack::phd::ClutterMode::kKnownUniform;
+  p.max_amplitude = 1e6f;
   REQUIRE(f->init(p) == Status::kOk);
   Filter::ScanType s;
   s.time_us = 1000076000u;
@@ -108,13 +130,20 @@ TEST_CASE("F8: GM-CPHD (known uniform clutter) keeps finite weights across a 23.
           Status::kOk);
   REQUIRE(s.measurements.push_back(meas(-127.058777f, -127.058777f, 5.70000029f, 171.0f)) ==
           Status::kOk);
-  CHECK(f->step(s) == Status::kPartial);  // three of four are invalid
-  for (const auto& c : f->components()) CHECK(mptrack::is_finite(c.weight));
+  CHECK(f->step(s) == Status::kPartial);  // the zero amplitude is invalid
+  float total = 0.0f;
+  for (const auto& c : f->components()) {
+    CHECK(mptrack::is_finite(c.weight));
+    total += c.weight;
+  }
+  // the weights still sum to the mean cardinality (they did not before:
+  // 0.06 against 3.0 with an amplitude of 9999)
+  CHECK(total == doctest::Approx(static_cast<float>(f->expected_targets())).epsilon(1e-3));
+  REQUIRE(f->outputs()[0].tracks.size() == 3);
   for (const auto& t : f->outputs()[0].tracks) CHECK(mptrack::is_finite(t.state(0)));
 }
 
-TEST_CASE("F4: a finite but huge amplitude (3.4e38) is rejected and leaves the clutter estimate finite" *
-          doctest::skip()) {
+TEST_CASE("F4: a finite but huge amplitude (3.4e38) is rejected and leaves the clutter estimate finite") {
   // Fuzz (fuzz_iggm, crash-acf45904): CPHD with estimated uniform clutter;
   // one measurement of amplitude 3.4e38 passes the input check (finite,
   // above threshold) and its amplitude moments overflow: the uniform
@@ -139,8 +168,7 @@ TEST_CASE("F4: a finite but huge amplitude (3.4e38) is rejected and leaves the c
   }
 }
 
-TEST_CASE("F5/F9: MF-BP init rejects params whose clutter seed grid or threshold overflow" *
-          doctest::skip()) {
+TEST_CASE("F5/F9: MF-BP init rejects params whose clutter seed grid or threshold overflow") {
   // Fuzz (fuzz_params, crash-02d87a06 and crash-0f9926f4): validate()
   // accepts any finite positive r_max_m / clutter_cell_range_m /
   // clutter_seed_factor and a region of ~zero volume, and spawn_components()
@@ -156,17 +184,21 @@ TEST_CASE("F5/F9: MF-BP init rejects params whose clutter seed grid or threshold
   p.az_min_rad = 0.0f;  // crash-0f9926f4: a region of ~zero volume
   p.az_max_rad = 1e-40f;
   CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
+  // F12 follow-ups (seeds f12-mfbp-*): the uniform clutter count became NaN
+  p = mptrack::MfbpParams<float>{};
+  p.dirichlet_kappa = 3.4e38f;
+  CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
+  p = mptrack::MfbpParams<float>{};
+  p.uniform_rate_per_scan = 2.4e-41f;
+  CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
+  CHECK(mptrack::validate(mptrack::MfbpParams<float>{}, 7) == Status::kOk);  // defaults pass
 }
 
-TEST_CASE("F2/F3: front-end amplitudes stay finite for huge finite samples and at the noise floor" *
-          doctest::skip()) {
-  // Fuzz (fuzz_frontend): F2 float samples around 1e35 are finite (so not
-  // rejected) but the power map overflows to Inf (crash-b0c832fc); F3 tiny
-  // samples (~1e-25) with exact-zero CFAR training cells put the noise
-  // estimate at min_noise_power = 1e-30 and amplitude = sqrt(P / 1e-30)
-  // overflows to +Inf (crash-67dfbb87, crash-85ed14bd).
-  // Suggested fix: reject |sample| above a documented ceiling as
-  // kInvalidInput, and drop (count) detections whose amplitude is not finite.
+TEST_CASE("F2: a float cube with samples beyond max_abs_sample is refused and counted") {
+  // Fuzz (fuzz_frontend, crash-b0c832fc): float samples around 1e35 are
+  // finite (so passed the NaN/Inf check) but the power map overflowed and
+  // a detection got amplitude +Inf. Fix: FrontEndParams::max_abs_sample
+  // (default 1e6): the frame is refused as kInvalidInput.
   using Caps = mptrack::frontend::SmallDopplerRadarCaps;
   static mptrack::frontend::FrontEnd<Caps> fe;
   static mptrack::frontend::RadarCube<Caps> cube;
@@ -180,16 +212,160 @@ TEST_CASE("F2/F3: front-end amplitudes stay finite for huge finite samples and a
   p.max_detections = 16;
   REQUIRE(fe.init(p) == Status::kOk);
   for (std::size_t i = 0; i < cube.iq.size(); ++i) cube.iq[i] = (i % 7u == 0u) ? 1e35f : 0.0f;
+  CHECK(fe.process(cube, scan) == Status::kInvalidInput);
+  CHECK(scan.measurements.empty());
+  CHECK(fe.counters().frames_over_ceiling == 1);
+  CHECK(fe.counters().frames_rejected == 1);
+  // a strong target just under the ceiling is processed, with finite amplitudes
+  cube.iq.fill(0.0f);
+  mptrack::test::SynthTarget t;
+  t.range_m = 60.0;
+  t.amplitude = 4e5;  // peak |sample| ~4e5 + noise, < 1e6
+  mptrack::test::synthesize<Caps>(p, &t, 1, 1e6, 3, cube);
   const Status s = fe.process(cube, scan);
-  CHECK((s == Status::kInvalidInput || s == Status::kOk || s == Status::kCapacityExceeded));
+  CHECK((s == Status::kOk || s == Status::kCapacityExceeded));
+  CHECK_FALSE(scan.measurements.empty());
+  CHECK(fe.counters().frames_over_ceiling == 1);
   for (const auto& m : scan.measurements) CHECK(mptrack::is_finite(m.amplitude));
 }
 
-TEST_CASE("F12: GnnParams rejects standard deviations whose square overflows float" * doctest::skip()) {
+TEST_CASE("F3: a detection whose amplitude is not finite is dropped, counted and flagged kPartial") {
+  // Fuzz (fuzz_frontend, seed fuzz/corpus/frontend/f3-amplitude-inf-noise-floor):
+  // tiny samples (~1e-25) with exact-zero CFAR training cells put the
+  // noise estimate at min_noise_power = 1e-30, and sqrt(P / 1e-30)
+  // overflowed to +Inf. The cube below is that seed decoded the way
+  // fuzz_frontend.cpp does (float mode, bytes tiled over the cube, finite
+  // values beyond 1e6 scaled by 1e-32).
+  using Caps = FuzzRadarCaps;
+  static const std::uint8_t kSeed[] = {
+      0x16, 0x00, 0x37, 0xfb, 0x02, 0x25, 0x27, 0x2d, 0x00, 0xeb, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96,
+      0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96,
+      0x00, 0x00, 0x00, 0x00, 0x56, 0x1c, 0x09, 0x9d, 0xc7, 0xa0, 0x96, 0x96, 0x96, 0x96, 0x96,
+      0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x96, 0x3b, 0x96, 0x96, 0x96, 0x96, 0x96,
+      0x96, 0x96, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x2a, 0x9a, 0x9a, 0x99, 0x0d, 0x99};
+  static mptrack::frontend::FrontEnd<Caps> fe;
+  static mptrack::frontend::RadarCube<Caps> cube;
+  static mptrack::Scan<float, 6> scan;
+  namespace fe_ns = mptrack::frontend;
+  fe_ns::FrontEndParams p;
+  p.chirp_duration_s = 0.25e-6;
+  p.max_range_m = 40.0;
+  p.max_detections = 8;
+  const std::uint8_t c0 = kSeed[0];
+  const std::uint8_t c1 = kSeed[1];
+  p.cfar.type = static_cast<fe_ns::CfarType>(c0 % 4u);
+  p.cfar.edge = static_cast<fe_ns::CfarEdge>((c0 >> 2) % 3u);
+  p.cfar.guard_cells = (c0 >> 4) & 1u;
+  p.cfar.training_cells = 1u + ((c0 >> 5) & 1u);
+  p.cfar.pfa = (c1 & 1u) != 0 ? 0.3 : 1e-3;
+  p.remove_dc = (c1 & 2u) != 0;
+  p.range_window = static_cast<fe_ns::WindowType>((c1 >> 2) % 4u);
+  p.doppler_window = static_cast<fe_ns::WindowType>((c1 >> 4) % 4u);
+  p.angle_window = static_cast<fe_ns::WindowType>((c1 >> 6) % 4u);
+  REQUIRE(fe.init(p) == Status::kOk);
+  REQUIRE((kSeed[2] & 1u) == 1u);  // float mode
+  const std::size_t avail = sizeof(kSeed) - 3;
+  const std::uint8_t* bytes = kSeed + 3;
+  for (std::size_t i = 0; i < cube.iq.size(); ++i) {
+    const std::size_t k = (4 * i) % (avail - 3);
+    float f;
+    std::memcpy(&f, bytes + k, 4);
+    if (mptrack::is_finite(f) && (f > 1e6f || f < -1e6f)) f *= 1e-32f;
+    cube.iq[i] = f;
+  }
+  const Status s = fe.process(cube, scan);
+  CHECK(s == Status::kPartial);
+  CHECK(fe.counters().detections_nonfinite == 1);
+  CHECK(fe.counters().frames == 1);
+  CHECK(fe.counters().detections == scan.measurements.size());
+  for (const auto& m : scan.measurements) CHECK(mptrack::is_finite(m.amplitude));
+}
+
+TEST_CASE("F12: GnnParams rejects standard deviations whose square overflows float") {
   // Fuzz (fuzz_params, crash-e2803da3): init_velocity_std_mps = 3.4e38 is
   // accepted (check_positive has no upper bound); the first track's
   // velocity variance is +Inf and reported as such.
   mptrack::GnnParams<float> p;
   p.init_velocity_std_mps = 3.4e38f;
   CHECK(p.validate() == Status::kInvalidArgument);
+  p = mptrack::GnnParams<float>{};
+  p.sigma_range_m = 1e-40f;  // seed f12-*: a singular position covariance
+  CHECK(p.validate() == Status::kInvalidArgument);
+  p = mptrack::GnnParams<float>{};
+  p.max_range_m = 3.4e38f;  // (r sigma_az)^2 overflows
+  CHECK(p.validate() == Status::kInvalidArgument);
+  p = mptrack::GnnParams<float>{};
+  p.init_velocity_std_mps = 1e-40f;  // seed f12-gnn-init-velocity-std-denormal: variance 0
+  CHECK(p.validate() == Status::kInvalidArgument);
+  CHECK(mptrack::GnnParams<float>{}.validate() == Status::kOk);  // the defaults still pass
+}
+
+TEST_CASE("F12: a GNN track born near range 0 has a positive definite covariance") {
+  // Fuzz (fuzz_params, seed f12-gnn-tiny-region-rank-one-cov): a region
+  // with max_range_m = 1.8e-38 m; the measurement's cross-range variance
+  // (r sigma_az)^2 underflowed to 0 and the initial position covariance
+  // was rank one. polar_initiate floors the cross-range std at 1e-3 x the
+  // range std.
+  mptrack::CvState<float> x;
+  mptrack::CvCovariance<float> P;
+  for (const float r : {0.0f, 1e-20f, 1e-3f}) {
+    mptrack::polar_initiate(r, 0.7f, 0.2f, 0.01f, 10.0f, x, P);
+    CHECK(llt_ok(P));
+    const float det = P(0, 0) * P(2, 2) - P(0, 2) * P(2, 0);
+    CHECK(det > 0.0f);
+  }
+  // far from 0 the floor does not bind: cross-range variance (r sigma_az)^2
+  mptrack::polar_initiate(100.0f, 0.0f, 0.2f, 0.01f, 10.0f, x, P);
+  CHECK(P(2, 2) == doctest::Approx(1.0f));
+  CHECK(P(0, 0) == doctest::Approx(0.04f));
+}
+
+TEST_CASE("F12: FilterParams rejects a polar azimuth std whose derived clutter count overflows") {
+  // Fuzz (fuzz_params, seed f13-*): CPHD, polar sigma_az_rad = 5.5e11.
+  mptrack::phd::FilterParams<float> p;
+  p.space = mptrack::phd::MeasurementSpace::kPolar;
+  p.region_min0 = 10.0f;
+  p.region_max0 = 1000.0f;
+  p.region_min1 = -1.0f;
+  p.region_max1 = 1.0f;
+  REQUIRE(p.validate() == Status::kOk);
+  p.sigma_az_rad = 5.5e11f;
+  CHECK(p.validate() == Status::kInvalidArgument);
+  p.sigma_az_rad = 0.0104720f;
+  p.sigma_r_m = 1e-40f;
+  CHECK(p.validate() == Status::kInvalidArgument);
+  p.sigma_r_m = 10.0f;
+  p.birth_velocity_std_mps = 3.4e38f;
+  CHECK(p.validate() == Status::kInvalidArgument);
+}
+
+TEST_CASE("F10: FilterParams rejects a region whose volume overflows, and a negative polar range") {
+  // Fuzz (fuzz_params): polar space with the default region_min0 = -1000
+  // and region_max0 = 3.4e38 was accepted; the region volume overflowed
+  // and the clutter intensity and expected_count became NaN.
+  mptrack::phd::FilterParams<float> p;
+  p.space = mptrack::phd::MeasurementSpace::kPolar;
+  p.region_min1 = -1.0f;
+  p.region_max1 = 1.0f;
+  p.region_min0 = 0.0f;
+  p.region_max0 = 1000.0f;
+  REQUIRE(p.validate() == Status::kOk);
+  p.region_min0 = -1000.0f;  // a negative range bound
+  CHECK(p.validate() == Status::kInvalidArgument);
+  p.region_min0 = 0.0f;
+  p.region_max0 = 3.4e38f;  // volume 6.8e38 = +Inf in float
+  CHECK(p.validate() == Status::kInvalidArgument);
+  p.region_max0 = 1000.0f;
+  p.region_max1 = -1.0f + 1e-12f;  // rounds to -1: empty region
+  CHECK(p.validate() == Status::kInvalidArgument);
+  // Cartesian: both axes in metres, a huge but finite volume is refused too
+  mptrack::phd::FilterParams<float> c;
+  REQUIRE(c.validate() == Status::kOk);
+  c.region_min0 = -2e19f;
+  c.region_max0 = 2e19f;
+  c.region_min1 = -2e19f;
+  c.region_max1 = 2e19f;
+  CHECK(c.validate() == Status::kInvalidArgument);
 }

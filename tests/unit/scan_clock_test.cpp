@@ -34,3 +34,20 @@ TEST_CASE("elapsed time is the gap to the last accepted scan, or the default fir
   clock.reset();
   CHECK_FALSE(clock.has_time());
 }
+
+TEST_CASE("max-gap rule: only a gap longer than max_gap_s is flagged, and restart forgets the time") {
+  ScanClock clock;
+  clock.advance(1'000'000);
+  CHECK_FALSE(clock.gap_exceeded(1'000'000'000'000));  // no rule installed yet
+  clock.set_max_gap_s(60.0f);
+  CHECK_FALSE(clock.gap_exceeded(61'000'000));  // exactly 60 s: not beyond
+  CHECK(clock.gap_exceeded(61'000'001));
+  CHECK_FALSE(clock.gap_exceeded(500'000));  // earlier times are admit()'s business
+  clock.restart();
+  CHECK_FALSE(clock.has_time());
+  CHECK_FALSE(clock.gap_exceeded(1'000'000'000'000));  // first scan of a new run
+  CHECK(clock.elapsed_s(2'000'000, 1.25) == 1.25);
+  clock.reset();  // keeps the rule
+  clock.advance(0);
+  CHECK(clock.gap_exceeded(60'000'001));
+}

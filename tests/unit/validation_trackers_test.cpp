@@ -178,10 +178,11 @@ TEST_CASE_TEMPLATE("validation: each bad measurement is skipped, counted and rep
       {"NaN azimuth", meas(good.range_m, kNaN, good.amplitude), false},
       {"range outside region", meas(Case::kOutsideRange, good.azimuth_rad, good.amplitude), false},
       {"azimuth outside region", meas(good.range_m, Case::kOutsideAz, good.amplitude), false},
-      {"NaN amplitude", meas(good.range_m, good.azimuth_rad, kNaN), true},
-      {"+Inf amplitude", meas(good.range_m, good.azimuth_rad, kInf), true},
-      {"negative amplitude", meas(good.range_m, good.azimuth_rad, -3.0f), true},
-      {"zero amplitude", meas(good.range_m, good.azimuth_rad, 0.0f), true},
+      // (at 0.9 x range: an exact copy of the good position is a duplicate, F11)
+      {"NaN amplitude", meas(good.range_m * 0.9f, good.azimuth_rad, kNaN), true},
+      {"+Inf amplitude", meas(good.range_m * 0.9f, good.azimuth_rad, kInf), true},
+      {"negative amplitude", meas(good.range_m * 0.9f, good.azimuth_rad, -3.0f), true},
+      {"zero amplitude", meas(good.range_m * 0.9f, good.azimuth_rad, 0.0f), true},
   };
   for (const Bad& b : bad) {
     auto t = make_tracker<Case>();
@@ -279,35 +280,104 @@ TEST_CASE_TEMPLATE("validation: 1000 empty scans keep the tracker finite and it 
   CHECK(outputs_finite(*t));
 }
 
-TEST_CASE_TEMPLATE("validation: duplicated measurements give a bounded, finite result", Case,
-                   MPTRACK_TRACKER_CASES) {
+// Trackers that take scans through ScanClock and the shared duplicate
+// rule (measurement.h): all of them.
+#define MPTRACK_CLOCKED_CASES GnnCase, MfbpCase, PhdCase, CphdCase, CbmCase
+
+TEST_CASE_TEMPLATE("F11: an exact duplicate is dropped, counted, and the target gets one track", Case,
+                   MPTRACK_CLOCKED_CASES) {
   auto t = make_tracker<Case>();
   const auto good = Case::target();
+  auto other_amp = good;  // same range and azimuth bits, another amplitude: still a duplicate
+  other_amp.amplitude = good.amplitude * 1.5f;
   std::size_t reported = 0;
+  std::int32_t index = -2;
   for (std::uint64_t k = 0; k < 20; ++k) {
-    // the same detection twice in every scan (e.g. a double-reporting detector)
-    REQUIRE(ok(t->step(scan_at<Case>(k, {good, good}))));
-    for (const auto& e : t->outputs()) reported = e.tracks.size();
+    REQUIRE(t->step(scan_at<Case>(k, {good, good, other_amp})) == Status::kPartial);
+    for (const auto& e : t->outputs()) {
+      reported = e.tracks.size();
+      if (reported > 0) index = e.tracks[0].measurement_index;
+    }
   }
-  // Measured: 2 tracks in all five trackers (finding F11: no tracker
-  // de-duplicates; see the skipped test below).
-  const std::string line = std::string(Case::kName) +
-                           ": tracks after 20 scans of duplicated detections: " + std::to_string(reported);
-  MESSAGE(line);
-  CHECK(reported >= 1);
-  CHECK(reported <= 2);
+  CHECK(reported == 1);
+  CHECK(index == 0);  // the first copy is the one kept
+  CHECK(t->counters().measurements_duplicate == 40);
   CHECK(t->counters().measurements_invalid == 0);
+  CHECK(t->counters().measurements_in == 60);
   CHECK(outputs_finite(*t));
 }
 
-TEST_CASE_TEMPLATE("F11: duplicated measurements end in one track, not two" * doctest::skip(), Case,
-                   MPTRACK_TRACKER_CASES) {
+TEST_CASE_TEMPLATE("F11: measurements that differ in one bit are not duplicates", Case,
+                   MPTRACK_CLOCKED_CASES) {
   auto t = make_tracker<Case>();
   const auto good = Case::target();
+  auto near = good;
+  near.range_m = std::nextafter(good.range_m, 2.0f * good.range_m);
+  CHECK(t->step(scan_at<Case>(0, {good, near})) == Status::kOk);
+  CHECK(t->counters().measurements_duplicate == 0);
+  CHECK(mptrack::same_position(good, good));
+  CHECK_FALSE(mptrack::same_position(good, near));
+}
+
+TEST_CASE_TEMPLATE("F1: a scan after a gap beyond max_gap_s drops every track and starts a new run",
+                   Case, MPTRACK_CLOCKED_CASES) {
+  auto t = make_tracker<Case>();
+  const auto good = Case::target();
+  std::uint64_t k = 0;
+  for (; k < 15; ++k) REQUIRE(ok(t->step(scan_at<Case>(k, {good}))));
+  REQUIRE(t->outputs()[0].tracks.size() == 1);
+  const std::uint32_t old_id = t->outputs()[0].tracks[0].id;
+  // 58 s late (59.25 s after the previous scan at most): inside the default
+  // max_gap_s = 60 s, nothing is reset
+  auto s = scan_at<Case>(k, {good});
+  s.time_us += 58000000u;
+  REQUIRE(ok(t->step(s)));
+  CHECK(t->counters().gap_resets == 0);
+  // 2000 s later (F1: the float CV covariance is singular by then)
+  s.time_us += 2000000000u;
+  REQUIRE(ok(t->step(s)));
+  CHECK(t->counters().gap_resets == 1);
+  for (const auto& e : t->outputs()) {
+    for (const auto& r : e.tracks) CHECK(r.id != old_id);
+  }
+  CHECK(outputs_finite(*t));
+  // the target is picked up again as a new track
   std::size_t reported = 0;
-  for (std::uint64_t k = 0; k < 20; ++k) {
-    REQUIRE(ok(t->step(scan_at<Case>(k, {good, good}))));
-    for (const auto& e : t->outputs()) reported = e.tracks.size();
+  std::uint32_t new_id = old_id;
+  for (int j = 0; j < 15; ++j) {
+    s.time_us += Case::kDtUs;
+    REQUIRE(ok(t->step(s)));
+    for (const auto& e : t->outputs()) {
+      reported = e.tracks.size();
+      if (reported > 0) new_id = e.tracks[0].id;
+    }
   }
   CHECK(reported == 1);
+  CHECK(new_id != old_id);
+  CHECK(t->counters().gap_resets == 1);
+  CHECK(outputs_finite(*t));
+}
+
+TEST_CASE_TEMPLATE("F1: max_gap_s is validated", Case, MPTRACK_CLOCKED_CASES) {
+  auto t = std::make_unique<typename Case::Tracker>();
+  auto p = Case::params();
+  p.max_gap_s = 0.0f;
+  CHECK(t->init(p) == Status::kInvalidArgument);
+  p.max_gap_s = kNaN;
+  CHECK(t->init(p) == Status::kInvalidArgument);
+  p.max_gap_s = 2e6f;
+  CHECK(t->init(p) == Status::kInvalidArgument);
+  p.max_gap_s = 3600.0f;
+  CHECK(t->init(p) == Status::kOk);
+}
+
+TEST_CASE("F4: amplitudes above max_amplitude are invalid in the IGGM filters") {
+  auto t = make_tracker<CphdCase>();
+  const auto good = CphdCase::target();
+  auto loud = meas(good.range_m * 0.8f, good.azimuth_rad, 2e4f);  // default max_amplitude 1e4
+  CHECK(t->step(scan_at<CphdCase>(0, {good, loud})) == Status::kPartial);
+  CHECK(t->counters().measurements_invalid == 1);
+  loud.amplitude = 9e3f;
+  CHECK(t->step(scan_at<CphdCase>(1, {good, loud})) == Status::kOk);
+  CHECK(t->counters().measurements_invalid == 1);
 }

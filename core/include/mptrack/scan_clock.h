@@ -6,6 +6,16 @@
 // increase strictly (kOutOfOrder); both count in
 // TrackerCounters::scans_rejected. An admitted scan gets the time elapsed
 // since the previous accepted scan; advance() records it as accepted.
+//
+// Max-gap rule (docs/reliability.md F1). A scan more than max_gap after
+// the previous accepted one is accepted, but gap_exceeded() flags it: the
+// tracker then drops every track (counted in TrackerCounters::gap_resets
+// and tracks_deleted) and processes the scan as the first of a new run.
+// Predicting a constant-velocity covariance over an unbounded gap is
+// meaningless (after ~1000 s the float CV covariance, P_vv dt^2 ~ 1e20, is
+// singular to working precision) and the old tracks would gate nothing.
+// Each tracker's Params carries max_gap_s (default 60 s); set_max_gap_s()
+// installs it at init(). No limit until it is set.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +47,26 @@ class ScanClock {
     return Status::kOk;
   }
 
+  /// Installs the max-gap rule: a gap longer than max_gap_s [s] is flagged
+  /// by gap_exceeded(). max_gap_s must be validated (finite, > 0, <= 1e6 s)
+  /// by the caller's Params; reset() keeps it.
+  template <class T>
+  void set_max_gap_s(T max_gap_s) {
+    max_gap_us_ = static_cast<std::uint64_t>(max_gap_s * T(1e6));
+  }
+
+  /// True if a previous scan was accepted and time_us is more than the max
+  /// gap after it (never true before set_max_gap_s()). Call after admit().
+  bool gap_exceeded(std::uint64_t time_us) const {
+    return has_time_ && max_gap_us_ > 0 && time_us > last_time_us_ &&
+           time_us - last_time_us_ > max_gap_us_;
+  }
+
+  /// Forgets the previous scan time only (after gap_exceeded()): the next
+  /// elapsed_s() returns its first_dt_s. Admission is unaffected: the
+  /// caller has admitted the current scan already.
+  void restart() { has_time_ = false; }
+
   /// Time since the previous accepted scan [s]; first_dt_s for the first scan.
   template <class T>
   T elapsed_s(std::uint64_t time_us, T first_dt_s) const {
@@ -54,6 +84,7 @@ class ScanClock {
 
  private:
   std::uint64_t last_time_us_ = 0;  ///< time of the last accepted scan [us]
+  std::uint64_t max_gap_us_ = 0;    ///< max-gap rule [us], 0 = none
   bool has_time_ = false;
 };
 

@@ -71,6 +71,8 @@ struct TrackerCounters {
   std::uint64_t clutter_cap_hits = 0;
   std::uint64_t bp_not_converged = 0;         ///< BP runs that hit the iteration cap
   std::uint64_t numerical_repairs = 0;        ///< covariances re-symmetrised / regularised
+  std::uint64_t gap_resets = 0;               ///< scans after a gap > Params::max_gap_s: all tracks dropped (scan_clock.h)
+  std::uint64_t measurements_duplicate = 0;   ///< exact duplicates of an earlier measurement of the scan, dropped (measurement.h)
 };
 
 }  // namespace mptrack

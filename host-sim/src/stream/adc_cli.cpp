@@ -30,6 +30,7 @@ int run_adc_cli(const AdcCliArgs& a) {
   cfg.csv_runs = a.csv_runs;
   cfg.plot = a.plot;
   cfg.progress = a.progress;
+  cfg.mfbp_params = a.mfbp_params;
   cfg.out_dir = a.out_dir.empty() ? "out/" + cfg.scenario.name + "-" + a.tracker : a.out_dir;
   const AdcSummary s = run_adc_monte_carlo(cfg);
   print_adc_summary(s, cfg.out_dir);

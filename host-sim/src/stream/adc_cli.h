@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace mptrack::sim {
 
@@ -19,6 +20,7 @@ struct AdcCliArgs {
   std::int64_t csv_runs = -1;
   bool plot = true;
   bool progress = true;
+  std::vector<std::string> mfbp_params;  ///< --mfbp-param overrides
 };
 
 /// True for a built-in raw-ADC name or a file with the raw-ADC schema.

@@ -17,6 +17,7 @@
 #include "mptrack/adc/synthesizer.h"
 #include "mptrack/frontend/front_end.h"
 #include "mptrack/math/detmath.h"
+#include "mptrack/platform/stage_report.h"
 #include "progress.h"
 #include "stream/adc_trackers.h"
 #include "svg_plot.h"
@@ -171,6 +172,7 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
 
   auto fe = std::make_unique<FrontEnd>();
   Progress progress(sc.name + " " + cfg.tracker, static_cast<std::uint64_t>(cfg.runs) * n_frames, cfg.progress);
+  platform::CoreProfileRecorders stage_profile;  // per-stage table with -DMPTRACK_PROFILE=ON
   for (std::uint32_t run = 0; run < cfg.runs; ++run) {
     evaluator.begin_run();
     adc::FrameSynthesizer syn;
@@ -180,6 +182,7 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
     std::unique_ptr<TrackerAdapter> tracker = make_adc_tracker(cfg.tracker, error);
     TrackerSetup setup;
     setup.spec = view;
+    setup.mfbp_params = cfg.mfbp_params;
     error = tracker->init(setup);
     if (!error.empty()) throw std::runtime_error("tracker " + cfg.tracker + ": " + error);
 
@@ -224,6 +227,7 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
           frontend::FrontEndStageTimes times;
           times.clock = &ns_clock;
           const Status fst = fe->process(f.cube, fe_scan, &times);
+          stage_profile.poll();
           const std::uint64_t t1 = stream_now_ns();
           r.range_us = times.ticks[0] * 1e-3;
           r.doppler_us = times.ticks[1] * 1e-3;
@@ -248,6 +252,7 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
           const std::uint64_t t2 = stream_now_ns();
           const Status st = tracker->step(s, finals);
           const std::uint64_t t3 = stream_now_ns();
+          stage_profile.poll();
           sum.count_status(st);
           r.tracker_us = static_cast<double>(t3 - t2) * 1e-3;
           r.frame_us = static_cast<double>((t1 - t0) + (t3 - t2)) * 1e-3;
@@ -399,6 +404,7 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
       write_plot_svg(cfg.out_dir + "/plot.svg", view, plot_scans, plot_estimates, sum.ospa_per_scan, title);
     }
   }
+  stage_profile.print();
   return out;
 }
 

@@ -35,6 +35,7 @@ struct AdcRunConfig {
   bool plot = true;
   bool progress = true;
   std::uint32_t consumer_delay_us = 0;  ///< extra sleep per consumed frame (tests: a slow consumer)
+  std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
 };
 
 /// Per-stage latency over all processed frames of all runs [us].

@@ -8,6 +8,7 @@
 #include "mptrack/math/detmath.h"
 #include "tracker_registry.h"
 #include "trackers/core_adapter.h"
+#include "trackers/mfbp_param_override.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/gnn/gnn_tracker.h"
 
@@ -120,10 +121,17 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     p.visibility_at_birth = 0.7;
     p.delete_run = 10;
     p.tentative_timeout_scans = 10;
+    // - no unresolved-pair coupling (seed 000's formation pair): here a
+    //   merged or split detection starts a second track on the same drone,
+    //   and coupled tracks share its measurements and both survive
+    //   (20 runs: OSPA 4.3 m off, 6.6 m with unresolved_chi2 = 4).
+    p.unresolved_chi2 = 0.0;
     if (filter_) {
       p.window_length = 1;
       p.slide = 1;
     }
+    const std::string error = apply_mfbp_params(p, setup.mfbp_params);
+    if (!error.empty()) return error;
     return init_tracker(p);
   }
 

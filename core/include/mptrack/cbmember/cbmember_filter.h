@@ -86,6 +86,7 @@ class CbMemberFilter {
     next_label_ = 1;
     scan_index_ = 0;
     clock_.reset();
+    clock_.set_max_gap_s(p.max_gap_s);
     initialized_ = true;
     return Status::kOk;
   }
@@ -93,12 +94,19 @@ class CbMemberFilter {
   Status step(const ScanType& scan) {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
+    if (clock_.gap_exceeded(scan.time_us)) {  // max-gap rule (scan_clock.h, F1)
+      ++counters_.gap_resets;
+      tracks_.clear();
+      births_.clear();
+      clock_.restart();
+    }
     const T dt = clock_.elapsed_s(scan.time_us, params_.scan_period_s);
     clock_.advance(scan.time_us);
     ++counters_.scans;
     counters_.measurements_in += scan.measurements.size();
     batch_.load(scan, params_, model_);
     counters_.measurements_invalid += batch_.invalid;
+    counters_.measurements_duplicate += batch_.duplicate;
     const std::uint64_t cap_before = counters_.track_cap_hits;
 
     predict(dt);
@@ -113,7 +121,7 @@ class CbMemberFilter {
     extract(scan.time_us);
     ++scan_index_;
     if (counters_.track_cap_hits != cap_before) return Status::kCapacityExceeded;
-    return batch_.invalid > 0 ? Status::kPartial : Status::kOk;
+    return batch_.invalid + batch_.duplicate > 0 ? Status::kPartial : Status::kOk;
   }
 
   Status flush() {

@@ -16,13 +16,18 @@
 //
 // Speed without changing a bit (bench/README.md has the numbers): every
 // pass is instantiated with its half-size as a compile-time constant (known
-// trip counts, all pointers __restrict, so GCC emits straight vector loops);
-// the first, multiply-free stage runs on the input order before the
-// bit-reversal (unit-stride runs instead of stride-4 gathers, see
-// radix2_first); the swap list is a constexpr table. Each output element
-// still sees the same operations on the same operands in the same order;
-// -ffp-contract=off keeps vector and scalar builds from fusing anything, so
-// tests/golden/data/frontend_*.golden match unchanged.
+// trip counts) and its butterflies are kernels with __restrict parameters
+// (fft_detail), so GCC emits straight vector loops; the first stages run on
+// the input order before the bit reversal (unit-stride runs instead of
+// stride-2/4 gathers, see radix2_first); on SSE2/AArch64 the bit reversal
+// is a blocked 4 x 4 transpose, fused with the first radix-4 stage for
+// even log2 N < 8; on x86-64 hosts forward() runs the same schedule
+// compiled for AVX-512 or AVX2 when the CPU has them (N >= 64; no FMA).
+// Each output element still sees the same operations on the same operands
+// in the same order; -ffp-contract=off keeps vector and scalar builds from
+// fusing anything, so tests/golden/data/frontend_*.golden match unchanged
+// (tests/unit/fft_reorder_test.cpp and fft_dispatch_test.cpp check every
+// size 2..4096 bit for bit against the textbook schedule).
 //
 // Twiddles are computed once in init() in double with mptrack::dmath
 // (no libm), then rounded to float, so the table is identical everywhere.
@@ -41,6 +46,7 @@
 #include <cstdint>
 
 #include <cstring>
+#include <type_traits>
 
 #include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
@@ -55,7 +61,149 @@
 #define MPTRACK_FFT_VECTOR_PERMUTE 0
 #endif
 
+// Run-time ISA dispatch on x86-64 Linux hosts built with GCC: forward()
+// runs the same schedule compiled for AVX-512 or AVX2 (never FMA) when
+// the CPU supports it. Define MPTRACK_FFT_X86_DISPATCH=0 to build only the
+// baseline (SSE2) copy. Targets (aarch64, armhf, Cortex-M) have one copy.
+#ifndef MPTRACK_FFT_X86_DISPATCH
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define MPTRACK_FFT_X86_DISPATCH 1
+#else
+#define MPTRACK_FFT_X86_DISPATCH 0
+#endif
+#endif
+
+// The butterfly loops must reach the loop vectoriser, which keeps the
+// __restrict facts: GCC otherwise unrolls short constant-trip loops (4, 8)
+// completely first, and its straight-line (SLP) vectoriser then gives up on
+// possible aliasing and emits scalar stores that stall the next pass's
+// vector loads (measured: N = 32 three times slower behind a call).
+// Only where the loops are vectorised (SSE2, AArch64); scalar targets
+// (Cortex-M, armhf) keep GCC's complete unrolling.
+#if MPTRACK_FFT_VECTOR_PERMUTE
+#define MPTRACK_FFT_NO_UNROLL _Pragma("GCC unroll 1")
+#else
+#define MPTRACK_FFT_NO_UNROLL
+#endif
+
+// Every pass is force-inlined into forward_schedule(), so each dispatch
+// copy compiles the whole schedule for its own ISA.
+#if MPTRACK_FFT_X86_DISPATCH
+#define MPTRACK_FFT_INLINE __attribute__((always_inline)) inline
+#else
+#define MPTRACK_FFT_INLINE inline
+#endif
+
 namespace mptrack::dsp {
+
+namespace fft_detail {
+
+// Butterfly kernels over runs of kLen elements. The no-alias facts are
+// __restrict FUNCTION PARAMETERS: GCC keeps those when it inlines the
+// kernel into a pass (the dispatch copies inline everything), whereas
+// __restrict local variables lose them and the loops stop vectorising.
+// Each is the exact per-element operation sequence of the DIT radix-2 /
+// radix-2^2 butterfly (see Fft); only the schedule differs between users.
+
+/// Radix-2, twiddle 1: (a, b) -> (a + b, a - b).
+template <std::size_t kLen>
+MPTRACK_FFT_INLINE void radix2_run(float* __restrict r0, float* __restrict i0,
+                                   float* __restrict r1, float* __restrict i1) {
+  MPTRACK_FFT_NO_UNROLL
+  for (std::size_t r = 0; r < kLen; ++r) {
+    const float tr = r1[r];
+    const float ti = i1[r];
+    r1[r] = r0[r] - tr;
+    i1[r] = i0[r] - ti;
+    r0[r] = r0[r] + tr;
+    i0[r] = i0[r] + ti;
+  }
+}
+
+/// Half-sizes 1 and 2 fused (twiddles 1 and -j): no multiplies.
+template <std::size_t kLen>
+MPTRACK_FFT_INLINE void radix4_first_run(float* __restrict r0, float* __restrict i0,
+                                         float* __restrict r1, float* __restrict i1,
+                                         float* __restrict r2, float* __restrict i2,
+                                         float* __restrict r3, float* __restrict i3) {
+  MPTRACK_FFT_NO_UNROLL
+  for (std::size_t r = 0; r < kLen; ++r) {
+    const float b0r = r0[r] + r1[r];
+    const float b0i = i0[r] + i1[r];
+    const float b1r = r0[r] - r1[r];
+    const float b1i = i0[r] - i1[r];
+    const float b2r = r2[r] + r3[r];
+    const float b2i = i2[r] + i3[r];
+    const float b3r = r2[r] - r3[r];
+    const float b3i = i2[r] - i3[r];
+    r0[r] = b0r + b2r;
+    i0[r] = b0i + b2i;
+    r2[r] = b0r - b2r;
+    i2[r] = b0i - b2i;
+    // -j * b3 = (b3i, -b3r)
+    r1[r] = b1r + b3i;
+    i1[r] = b1i - b3r;
+    r3[r] = b1r - b3i;
+    i3[r] = b1i + b3r;
+  }
+}
+
+/// Two radix-2 stages (half-sizes h, 2h) fused: operands a0..a3 at
+/// r0..r3, twiddles W_{2h}^j (w1) and W_{4h}^j (w2), the odd pair's second
+/// twiddle -j w2 applied as a swap. W is float* (one twiddle per element)
+/// or float (one twiddle for the whole run).
+template <std::size_t kLen, class W>
+MPTRACK_FFT_INLINE void radix4_run(float* __restrict r0, float* __restrict i0,
+                                   float* __restrict r1, float* __restrict i1,
+                                   float* __restrict r2, float* __restrict i2,
+                                   float* __restrict r3, float* __restrict i3, W w1r, W w1i,
+                                   W w2r, W w2i) {
+  constexpr bool kPerElement = !std::is_same<W, float>::value;
+  MPTRACK_FFT_NO_UNROLL
+  for (std::size_t j = 0; j < kLen; ++j) {
+    float a1r, a1i, a2r, a2i;  // w1, w2 of this element
+    if constexpr (kPerElement) {
+      a1r = w1r[j];
+      a1i = w1i[j];
+      a2r = w2r[j];
+      a2i = w2i[j];
+    } else {
+      a1r = w1r;
+      a1i = w1i;
+      a2r = w2r;
+      a2i = w2i;
+    }
+    // Stage h: (a0, a1) and (a2, a3) with w1.
+    const float t1r = a1r * r1[j] - a1i * i1[j];
+    const float t1i = a1r * i1[j] + a1i * r1[j];
+    const float t3r = a1r * r3[j] - a1i * i3[j];
+    const float t3i = a1r * i3[j] + a1i * r3[j];
+    const float b0r = r0[j] + t1r;
+    const float b0i = i0[j] + t1i;
+    const float b1r = r0[j] - t1r;
+    const float b1i = i0[j] - t1i;
+    const float b2r = r2[j] + t3r;
+    const float b2i = i2[j] + t3i;
+    const float b3r = r2[j] - t3r;
+    const float b3i = i2[j] - t3i;
+    // Stage 2h: (b0, b2) with w2, (b1, b3) with -j w2.
+    const float u2r = a2r * b2r - a2i * b2i;
+    const float u2i = a2r * b2i + a2i * b2r;
+    const float u3r = a2r * b3r - a2i * b3i;
+    const float u3i = a2r * b3i + a2i * b3r;
+    r0[j] = b0r + u2r;
+    i0[j] = b0i + u2i;
+    r2[j] = b0r - u2r;
+    i2[j] = b0i - u2i;
+    // -j * u3 = (u3i, -u3r)
+    r1[j] = b1r + u3i;
+    i1[j] = b1i - u3r;
+    r3[j] = b1r - u3i;
+    i3[j] = b1i + u3r;
+  }
+}
+
+}  // namespace fft_detail
 
 /// Compile-time check: n is a power of two >= 2.
 constexpr bool is_power_of_two(std::size_t n) { return n >= 2 && (n & (n - 1)) == 0; }
@@ -78,6 +226,9 @@ class Fft {
  public:
   static constexpr std::size_t kSize = N;
   static constexpr std::size_t kLog2 = log2_exact(N);
+  /// Below this size the wide copies lose (runs shorter than a vector,
+  /// 4 x 4 blocks): forward() always runs the baseline copy (measured).
+  static constexpr std::size_t kMinDispatchSize = 64;
 
   /// Builds the twiddle and bit-reversal tables. Always kOk; returns a
   /// Status so every component's init() chains the same way.
@@ -112,23 +263,40 @@ class Fft {
 
   /// In-place forward DFT of planar data re[0..N), im[0..N). Unscaled.
   /// Precondition: init() succeeded (checked by the owning stage's init()).
+  /// On x86-64 hosts the same schedule runs in a copy compiled for AVX-512
+  /// or AVX2 when the CPU has it (see MPTRACK_FFT_X86_DISPATCH): wider
+  /// vectors, the same operations per element, so the same bits.
   void forward(float* re, float* im) const {
-    if constexpr (kLog2 % 2 == 1) {
-      radix2_first(re, im);
-      if constexpr (N >= 128) {
-        // Long enough input-order runs (N/8 >= 16) to beat the 2-long natural runs.
-        radix4_pass_input_order<2>(re, im);
-        permute(re, im);
-        radix4_passes<8>(re, im);
-      } else {
-        permute(re, im);
-        radix4_passes<2>(re, im);
-      }
-    } else {
-      radix4_first(re, im);
-      permute(re, im);
-      radix4_passes<4>(re, im);
+#if MPTRACK_FFT_X86_DISPATCH
+    if constexpr (N < kMinDispatchSize) {
+      forward_schedule(re, im);
+      return;
     }
+    if (__builtin_cpu_supports("avx512f")) {
+      forward_avx512(re, im);
+      return;
+    }
+    if (__builtin_cpu_supports("avx2")) {
+      forward_avx2(re, im);
+      return;
+    }
+#endif
+    forward_schedule(re, im);
+  }
+
+  /// forward() without run-time ISA dispatch: the baseline build's code
+  /// (SSE2 on x86-64). For tests that prove every dispatch path gives the
+  /// same bits.
+  void forward_portable(float* re, float* im) const { forward_schedule(re, im); }
+
+  /// Which copy forward() runs on this CPU: "avx512", "avx2" or "baseline".
+  static const char* dispatch_name() {
+#if MPTRACK_FFT_X86_DISPATCH
+    if (N < kMinDispatchSize) return "baseline";
+    if (__builtin_cpu_supports("avx512f")) return "avx512";
+    if (__builtin_cpu_supports("avx2")) return "avx2";
+#endif
+    return "baseline";
   }
 
   /// In-place inverse DFT (unscaled): the forward transform with re/im swapped.
@@ -139,6 +307,57 @@ class Fft {
   float twiddle_im(std::size_t h, std::size_t j) const { return tw_im_[h - 1 + j]; }
 
  private:
+#if MPTRACK_FFT_X86_DISPATCH
+  // The dispatch copies: the whole schedule (every helper is always_inline)
+  // compiled for a wider ISA. Neither target enables FMA, and
+  // -ffp-contract=off forbids contraction anyway, so each element sees the
+  // same roundings as in the baseline copy.
+  __attribute__((target("avx2"), noinline)) void forward_avx2(float* re, float* im) const {
+    forward_schedule(re, im);
+  }
+  __attribute__((target("avx512f,prefer-vector-width=512"), noinline)) void forward_avx512(
+      float* re, float* im) const {
+    forward_schedule(re, im);
+  }
+#endif
+
+  // The schedule. Which passes run before the bit reversal (input order,
+  // runs of N/(4h)) and which after (natural order, runs of h) is chosen
+  // per size for run length (measured, bench/README.md); every choice
+  // performs the same operations per element.
+  MPTRACK_FFT_INLINE void forward_schedule(float* re, float* im) const {
+    if constexpr (kLog2 % 2 == 1) {
+      if constexpr (N >= 32) {
+        // Half-size 2 in input order: runs of N/8 instead of 2.
+        radix2_radix4_input_order(re, im);
+        permute(re, im);
+        radix4_passes<8>(re, im);
+      } else {
+        radix2_first(re, im);
+        permute(re, im);
+        radix4_passes<2>(re, im);
+      }
+    } else {
+#if MPTRACK_FFT_VECTOR_PERMUTE
+      if constexpr (N >= 256) {
+        // h = 4 in input order: runs of N/16 >= 16 instead of 4.
+        radix4_first(re, im);
+        radix4_pass_input_order<4>(re, im);
+        permute(re, im);
+        radix4_passes<16>(re, im);
+        return;
+      } else if constexpr (N >= 16) {
+        radix4_first_permute(re, im);
+        radix4_passes<4>(re, im);
+        return;
+      }
+#endif
+      radix4_first(re, im);
+      permute(re, im);
+      radix4_passes<4>(re, im);
+    }
+  }
+
   // The first stage runs BEFORE the bit-reversal permutation, on the
   // input order. After the permutation, slot a + k holds x[rev(a + k)], and
   // for a group start a (a multiple of 2, resp. 4) rev(a + k) = rev(a) +
@@ -150,54 +369,18 @@ class Fft {
   // vectorisable runs instead of stride-2/4 gathers.
 
   // Stage of half-size 1 (twiddle 1): no multiplies.
-  static void radix2_first(float* re, float* im) {
+  MPTRACK_FFT_INLINE static void radix2_first(float* re, float* im) {
     constexpr std::size_t kH = N / 2;
-    float* __restrict r0 = re;
-    float* __restrict i0 = im;
-    float* __restrict r1 = re + kH;
-    float* __restrict i1 = im + kH;
-    for (std::size_t r = 0; r < kH; ++r) {
-      const float tr = r1[r];
-      const float ti = i1[r];
-      r1[r] = r0[r] - tr;
-      i1[r] = i0[r] - ti;
-      r0[r] = r0[r] + tr;
-      i0[r] = i0[r] + ti;
-    }
+    fft_detail::radix2_run<kH>(re, im, re + kH, im + kH);
   }
 
   // Stages of half-size 1 and 2 fused (twiddles 1 and -j): no multiplies.
   // Group slots a..a+3 (natural order) are runs p0 = r, p1 = r + N/2,
   // p2 = r + N/4, p3 = r + 3N/4 here.
-  static void radix4_first(float* re, float* im) {
+  MPTRACK_FFT_INLINE static void radix4_first(float* re, float* im) {
     constexpr std::size_t kQ = N / 4;
-    float* __restrict r0 = re;
-    float* __restrict i0 = im;
-    float* __restrict r1 = re + 2 * kQ;
-    float* __restrict i1 = im + 2 * kQ;
-    float* __restrict r2 = re + kQ;
-    float* __restrict i2 = im + kQ;
-    float* __restrict r3 = re + 3 * kQ;
-    float* __restrict i3 = im + 3 * kQ;
-    for (std::size_t r = 0; r < kQ; ++r) {
-      const float b0r = r0[r] + r1[r];
-      const float b0i = i0[r] + i1[r];
-      const float b1r = r0[r] - r1[r];
-      const float b1i = i0[r] - i1[r];
-      const float b2r = r2[r] + r3[r];
-      const float b2i = i2[r] + i3[r];
-      const float b3r = r2[r] - r3[r];
-      const float b3i = i2[r] - i3[r];
-      r0[r] = b0r + b2r;
-      i0[r] = b0i + b2i;
-      r2[r] = b0r - b2r;
-      i2[r] = b0i - b2i;
-      // -j * b3 = (b3i, -b3r)
-      r1[r] = b1r + b3i;
-      i1[r] = b1i - b3r;
-      r3[r] = b1r - b3i;
-      i3[r] = b1i + b3r;
-    }
+    fft_detail::radix4_first_run<kQ>(re, im, re + 2 * kQ, im + 2 * kQ, re + kQ, im + kQ,
+                                     re + 3 * kQ, im + 3 * kQ);
   }
 
   // Two radix-2 DIT stages (half-sizes h and 2h) fused into one pass over
@@ -221,55 +404,45 @@ class Fft {
   // the same operations on the same operands as radix4_pass<h>. Used for
   // h = 2 (odd log2 N), whose natural-order runs are only 2 long.
   template <std::size_t h>
-  void radix4_pass_input_order(float* re, float* im) const {
+  MPTRACK_FFT_INLINE void radix4_pass_input_order(float* re, float* im) const {
     constexpr std::size_t kRun = N / (4 * h);
     for (std::size_t j = 0; j < h; ++j) {
       const std::size_t off = bit_reverse(j);
-      const float w1r = tw_re_[h - 1 + j];  // W_{2h}^j
-      const float w1i = tw_im_[h - 1 + j];
-      const float w2r = tw_re_[2 * h - 1 + j];  // W_{4h}^j
-      const float w2i = tw_im_[2 * h - 1 + j];
-      float* __restrict r0 = re + off;
-      float* __restrict i0 = im + off;
-      float* __restrict r1 = re + off + 2 * kRun;
-      float* __restrict i1 = im + off + 2 * kRun;
-      float* __restrict r2 = re + off + kRun;
-      float* __restrict i2 = im + off + kRun;
-      float* __restrict r3 = re + off + 3 * kRun;
-      float* __restrict i3 = im + off + 3 * kRun;
-      for (std::size_t q = 0; q < kRun; ++q) {
-        const float t1r = w1r * r1[q] - w1i * i1[q];
-        const float t1i = w1r * i1[q] + w1i * r1[q];
-        const float t3r = w1r * r3[q] - w1i * i3[q];
-        const float t3i = w1r * i3[q] + w1i * r3[q];
-        const float b0r = r0[q] + t1r;
-        const float b0i = i0[q] + t1i;
-        const float b1r = r0[q] - t1r;
-        const float b1i = i0[q] - t1i;
-        const float b2r = r2[q] + t3r;
-        const float b2i = i2[q] + t3i;
-        const float b3r = r2[q] - t3r;
-        const float b3i = i2[q] - t3i;
-        const float u2r = w2r * b2r - w2i * b2i;
-        const float u2i = w2r * b2i + w2i * b2r;
-        const float u3r = w2r * b3r - w2i * b3i;
-        const float u3i = w2r * b3i + w2i * b3r;
-        r0[q] = b0r + u2r;
-        i0[q] = b0i + u2i;
-        r2[q] = b0r - u2r;
-        i2[q] = b0i - u2i;
-        r1[q] = b1r + u3i;
-        i1[q] = b1i - u3r;
-        r3[q] = b1r - u3i;
-        i3[q] = b1i + u3r;
+      fft_detail::radix4_run<kRun, float>(
+          re + off, im + off, re + off + 2 * kRun, im + off + 2 * kRun, re + off + kRun,
+          im + off + kRun, re + off + 3 * kRun, im + off + 3 * kRun, tw_re_[h - 1 + j],
+          tw_im_[h - 1 + j], tw_re_[2 * h - 1 + j], tw_im_[2 * h - 1 + j]);
+    }
+  }
+
+  // radix2_first and radix4_pass_input_order<2> fused (odd log2 N >= 5):
+  // in input order the operands of both stages for column q are the eight
+  // rows q + m N/8 (radix 2: rows m, m + 4; half-size 2, j = 0: rows 0, 2,
+  // 1, 3; j = 1: rows 4, 6, 5, 7), so each chunk of columns goes through
+  // both stages while it is in L1 / registers. Same operations per element.
+  MPTRACK_FFT_INLINE void radix2_radix4_input_order(float* re, float* im) const {
+    constexpr std::size_t kE = N / 8;
+    constexpr std::size_t kC = kE < 16 ? kE : 16;
+    const float w1r0 = tw_re_[1], w1i0 = tw_im_[1], w2r0 = tw_re_[3], w2i0 = tw_im_[3];
+    const float w1r1 = tw_re_[2], w1i1 = tw_im_[2], w2r1 = tw_re_[4], w2i1 = tw_im_[4];
+    for (std::size_t q = 0; q < kE; q += kC) {
+      float* r = re + q;
+      float* m = im + q;
+      for (std::size_t k = 0; k < 4; ++k) {
+        fft_detail::radix2_run<kC>(r + k * kE, m + k * kE, r + (k + 4) * kE, m + (k + 4) * kE);
       }
+      fft_detail::radix4_run<kC, float>(r, m, r + 2 * kE, m + 2 * kE, r + kE, m + kE, r + 3 * kE,
+                                        m + 3 * kE, w1r0, w1i0, w2r0, w2i0);
+      fft_detail::radix4_run<kC, float>(r + 4 * kE, m + 4 * kE, r + 6 * kE, m + 6 * kE,
+                                        r + 5 * kE, m + 5 * kE, r + 7 * kE, m + 7 * kE, w1r1,
+                                        w1i1, w2r1, w2i1);
     }
   }
 
   // The radix-4 passes for half-sizes H, 4H, ... < N, each with its half-size
   // as a compile-time constant (inner trip count known: full vector loops).
   template <std::size_t H>
-  void radix4_passes(float* re, float* im) const {
+  MPTRACK_FFT_INLINE void radix4_passes(float* re, float* im) const {
     if constexpr (H < N) {
       radix4_pass<H>(re, im);
       radix4_passes<4 * H>(re, im);
@@ -277,52 +450,13 @@ class Fft {
   }
 
   template <std::size_t h>
-  void radix4_pass(float* re, float* im) const {
-    const float* __restrict w1r = &tw_re_[h - 1];      // W_{2h}^j
-    const float* __restrict w1i = &tw_im_[h - 1];
-    const float* __restrict w2r = &tw_re_[2 * h - 1];  // W_{4h}^j
-    const float* __restrict w2i = &tw_im_[2 * h - 1];
+  MPTRACK_FFT_INLINE void radix4_pass(float* re, float* im) const {
+    // Twiddles W_{2h}^j at offset h - 1, W_{4h}^j at 2h - 1.
     for (std::size_t base = 0; base < N; base += 4 * h) {
-      // The eight runs [0, h) are disjoint: __restrict lets the compiler
-      // vectorise without run-time overlap checks (it does not change the
-      // arithmetic, so results are the same bits).
-      float* __restrict r0 = re + base;
-      float* __restrict i0 = im + base;
-      float* __restrict r1 = re + base + h;
-      float* __restrict i1 = im + base + h;
-      float* __restrict r2 = re + base + 2 * h;
-      float* __restrict i2 = im + base + 2 * h;
-      float* __restrict r3 = re + base + 3 * h;
-      float* __restrict i3 = im + base + 3 * h;
-      for (std::size_t j = 0; j < h; ++j) {
-        // Stage h: (a0, a1) and (a2, a3) with w1.
-        const float t1r = w1r[j] * r1[j] - w1i[j] * i1[j];
-        const float t1i = w1r[j] * i1[j] + w1i[j] * r1[j];
-        const float t3r = w1r[j] * r3[j] - w1i[j] * i3[j];
-        const float t3i = w1r[j] * i3[j] + w1i[j] * r3[j];
-        const float b0r = r0[j] + t1r;
-        const float b0i = i0[j] + t1i;
-        const float b1r = r0[j] - t1r;
-        const float b1i = i0[j] - t1i;
-        const float b2r = r2[j] + t3r;
-        const float b2i = i2[j] + t3i;
-        const float b3r = r2[j] - t3r;
-        const float b3i = i2[j] - t3i;
-        // Stage 2h: (b0, b2) with w2, (b1, b3) with -j w2.
-        const float u2r = w2r[j] * b2r - w2i[j] * b2i;
-        const float u2i = w2r[j] * b2i + w2i[j] * b2r;
-        const float u3r = w2r[j] * b3r - w2i[j] * b3i;
-        const float u3i = w2r[j] * b3i + w2i[j] * b3r;
-        r0[j] = b0r + u2r;
-        i0[j] = b0i + u2i;
-        r2[j] = b0r - u2r;
-        i2[j] = b0i - u2i;
-        // -j * u3 = (u3i, -u3r)
-        r1[j] = b1r + u3i;
-        i1[j] = b1i - u3r;
-        r3[j] = b1r - u3i;
-        i3[j] = b1i + u3r;
-      }
+      fft_detail::radix4_run<h, const float*>(
+          re + base, im + base, re + base + h, im + base + h, re + base + 2 * h,
+          im + base + 2 * h, re + base + 3 * h, im + base + 3 * h, &tw_re_[h - 1],
+          &tw_im_[h - 1], &tw_re_[2 * h - 1], &tw_im_[2 * h - 1]);
     }
   }
 
@@ -354,9 +488,9 @@ class Fft {
   }
   static constexpr std::array<SwapPair, (kNumSwaps > 0 ? kNumSwaps : 1)> kSwaps = make_swaps();
 
-  static void permute(float* re, float* im) {
+  MPTRACK_FFT_INLINE static void permute(float* re, float* im) {
 #if MPTRACK_FFT_VECTOR_PERMUTE
-    if constexpr (N >= 64) {
+    if constexpr (N >= 16) {
       permute_blocks(re);
       permute_blocks(im);
       return;
@@ -382,14 +516,14 @@ class Fft {
   // block rev'(b) transposed with rows and columns permuted by r: four
   // vector loads, a 4 x 4 transpose in registers, four vector stores.
   using V4 = float __attribute__((vector_size(16)));
-  static V4 load4(const float* p) {
+  MPTRACK_FFT_INLINE static V4 load4(const float* p) {
     V4 v;
     std::memcpy(&v, p, sizeof v);
     return v;
   }
-  static void store4(float* p, V4 v) { std::memcpy(p, &v, sizeof v); }
+  MPTRACK_FFT_INLINE static void store4(float* p, V4 v) { std::memcpy(p, &v, sizeof v); }
   // W_{a'} = (V0, V2, V1, V3)^T row r(a').
-  static void transpose_block(V4& v0, V4& v1, V4& v2, V4& v3) {
+  MPTRACK_FFT_INLINE static void transpose_block(V4& v0, V4& v1, V4& v2, V4& v3) {
     using M = std::int32_t __attribute__((vector_size(16)));
     // Rows in the order V0, V2, V1, V3, then a standard 4 x 4 transpose.
     const V4 t0 = __builtin_shuffle(v0, v2, M{0, 4, 1, 5});  // V0[0] V2[0] V0[1] V2[1]
@@ -405,7 +539,70 @@ class Fft {
     v2 = c1;  // W_2 = column r(2) = 1
     v3 = c3;  // W_3 = column 3
   }
-  static void permute_blocks(float* x) {
+  // radix4_first and the permutation in one pass (even log2 N < 8): the four
+  // rows of block b (stride N/4) are exactly the operands p0, p2, p1, p3 of
+  // four first-stage groups (one per column), so the butterfly runs on the
+  // rows in registers (the same per-lane operations as radix4_first_run),
+  // then the block is transposed and stored at its partner rev'(b).
+  MPTRACK_FFT_INLINE static void first_block(const float* re, const float* im, V4 (&yr)[4],
+                                             V4 (&yi)[4]) {
+    constexpr std::size_t kQ = N / 4;
+    const V4 x0r = load4(re), x1r = load4(re + kQ), x2r = load4(re + 2 * kQ),
+             x3r = load4(re + 3 * kQ);
+    const V4 x0i = load4(im), x1i = load4(im + kQ), x2i = load4(im + 2 * kQ),
+             x3i = load4(im + 3 * kQ);
+    // Rows 0, 2, 1, 3 play r0, r1, r2, r3 of radix4_first_run.
+    const V4 b0r = x0r + x2r;
+    const V4 b0i = x0i + x2i;
+    const V4 b1r = x0r - x2r;
+    const V4 b1i = x0i - x2i;
+    const V4 b2r = x1r + x3r;
+    const V4 b2i = x1i + x3i;
+    const V4 b3r = x1r - x3r;
+    const V4 b3i = x1i - x3i;
+    yr[0] = b0r + b2r;
+    yi[0] = b0i + b2i;
+    yr[1] = b0r - b2r;
+    yi[1] = b0i - b2i;
+    yr[2] = b1r + b3i;
+    yi[2] = b1i - b3r;
+    yr[3] = b1r - b3i;
+    yi[3] = b1i + b3r;
+    transpose_block(yr[0], yr[1], yr[2], yr[3]);
+    transpose_block(yi[0], yi[1], yi[2], yi[3]);
+  }
+  MPTRACK_FFT_INLINE static void store_block(float* x, const V4 (&v)[4]) {
+    constexpr std::size_t kQ = N / 4;
+    store4(x, v[0]);
+    store4(x + kQ, v[1]);
+    store4(x + 2 * kQ, v[2]);
+    store4(x + 3 * kQ, v[3]);
+  }
+  MPTRACK_FFT_INLINE static void radix4_first_permute(float* re, float* im) {
+    constexpr std::size_t kMid = kLog2 - 4;
+    for (std::size_t b = 0; b < N / 16; ++b) {
+      std::size_t rb = 0;
+      for (std::size_t k = 0; k < kMid; ++k) {
+        if ((b >> k) & 1u) rb |= std::size_t{1} << (kMid - 1 - k);
+      }
+      if (rb < b) continue;  // the pair was handled at rb
+      V4 pr[4], pi[4];
+      first_block(re + 4 * b, im + 4 * b, pr, pi);
+      if (rb == b) {
+        store_block(re + 4 * b, pr);
+        store_block(im + 4 * b, pi);
+        continue;
+      }
+      V4 qr[4], qi[4];
+      first_block(re + 4 * rb, im + 4 * rb, qr, qi);
+      store_block(re + 4 * rb, pr);
+      store_block(im + 4 * rb, pi);
+      store_block(re + 4 * b, qr);
+      store_block(im + 4 * b, qi);
+    }
+  }
+
+  MPTRACK_FFT_INLINE static void permute_blocks(float* x) {
     constexpr std::size_t kQ = N / 4;
     constexpr std::size_t kMid = kLog2 - 4;
     for (std::size_t b = 0; b < N / 16; ++b) {

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "mptrack/frontend/angle_processor.h"
 #include "mptrack/frontend/cfar.h"
@@ -40,6 +41,7 @@
 #include "mptrack/frontend/range_matched_filter.h"
 #include "mptrack/math/detmath.h"
 #include "mptrack/measurement.h"
+#include "mptrack/profile.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
 
@@ -62,6 +64,13 @@ struct FrontEndCounters {
   std::uint64_t cells_tested = 0;         ///< CFAR tests run (local maxima in gate and span)
   std::uint64_t detections = 0;           ///< measurements emitted
   std::uint64_t detections_over_cap = 0;  ///< CFAR detections dropped by the per-frame cap
+  std::uint64_t frames_over_ceiling = 0;  ///< float frames refused: a sample beyond max_abs_sample
+                                          ///< (also in frames_rejected)
+  std::uint64_t frames_all_zero = 0;      ///< frames refused: every sample exactly 0 (dead ADC
+                                          ///< or link; also in frames_rejected)
+  std::uint64_t frames_saturated = 0;     ///< int16 frames with more than saturation_fraction of
+                                          ///< samples at full scale (processed, kPartial)
+  std::uint64_t detections_nonfinite = 0; ///< detections dropped: amplitude not finite (F3)
 };
 
 template <class Caps>
@@ -82,6 +91,8 @@ class FrontEnd {
     MPTRACK_TRY(check(is_finite(p.min_range_m) && is_finite(p.max_range_m) &&
                       p.min_range_m >= 0.0 && p.max_range_m > p.min_range_m));
     MPTRACK_TRY(check_range(p.min_noise_power, 0.0, 1e30));
+    MPTRACK_TRY(check_range(p.max_abs_sample, 1e-6, 1e9));
+    MPTRACK_TRY(check_range(p.saturation_fraction, 0.0, 1.0));
     MPTRACK_TRY(rmf_.init(p));
     MPTRACK_TRY(dop_.init(p));
     MPTRACK_TRY(ang_.init(p));
@@ -99,16 +110,25 @@ class FrontEnd {
     gate_hi_ = g_hi;
     max_detections_ = p.max_detections;
     min_noise_ = static_cast<float>(p.min_noise_power);
+    max_abs_sample_ = static_cast<float>(p.max_abs_sample);
+    // Flag when full-scale samples > fraction x total (integer compare, exact).
+    saturated_limit_ = static_cast<std::size_t>(
+        p.saturation_fraction * static_cast<double>(2 * RadarCubeT<Caps, float>::kNumComplex));
     initialized_ = true;
     return Status::kOk;
   }
 
   /// Processes one frame. out is cleared first; out.time_us = cube.time_us,
   /// out.has_doppler = (kNumChirps > 1). kNotInitialized before init();
-  /// kInvalidInput (out left empty, counted) if the cube holds NaN/Inf.
+  /// kInvalidInput (out left empty, counted in frames_rejected) if the cube
+  /// holds NaN/Inf, a float sample beyond max_abs_sample (also
+  /// frames_over_ceiling, F2), or only zeros (frames_all_zero: no data).
   /// Over-cap detections: the strongest are kept, the rest counted in
   /// counters().detections_over_cap and last_frame_dropped(), and the call
   /// returns kCapacityExceeded (out is valid: a success with losses).
+  /// Otherwise kPartial (out is valid) if the int16 frame is saturated
+  /// (frames_saturated) or a detection was dropped for a non-finite
+  /// amplitude (detections_nonfinite, F3); else kOk.
   template <class Sample, std::size_t N>
   Status process(const RadarCubeT<Caps, Sample>& cube, Scan<float, N>& out,
                  FrontEndStageTimes* times = nullptr) {
@@ -120,6 +140,16 @@ class FrontEnd {
       ++counters_.frames_rejected;
       return Status::kNotInitialized;
     }
+    MPTRACK_PROFILE_STEP(g_frontend);
+    MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kRange);
+    const FrameCheck fc = check_frame(cube);
+    if (fc.over_ceiling > 0 || fc.zero == cube.iq.size()) {
+      ++counters_.frames_rejected;
+      ++(fc.over_ceiling > 0 ? counters_.frames_over_ceiling : counters_.frames_all_zero);
+      return Status::kInvalidInput;
+    }
+    const bool saturated = fc.full_scale > saturated_limit_;
+    if (saturated) ++counters_.frames_saturated;
     std::uint32_t t0 = tick(times);
     const Status s = rmf_.process(cube);
     if (s != Status::kOk) {
@@ -128,18 +158,23 @@ class FrontEnd {
     }
     std::uint32_t t1 = tick(times);
     stamp(times, FrontEndStage::kRange, t0, t1);
+    MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kDoppler);
     MPTRACK_TRY(dop_.process(rmf_));
     t0 = tick(times);
     stamp(times, FrontEndStage::kDoppler, t1, t0);
+    MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kAngle);
     MPTRACK_TRY(ang_.process(dop_));
     t1 = tick(times);
     stamp(times, FrontEndStage::kAngle, t0, t1);
+    MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kCfar);
     detect(N);
-    emit(out);
+    MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kPeaks);
+    const std::size_t nonfinite = emit(out);
     t0 = tick(times);
     stamp(times, FrontEndStage::kDetect, t1, t0);
     ++counters_.frames;
-    return last_dropped_ > 0 ? Status::kCapacityExceeded : Status::kOk;
+    if (last_dropped_ > 0) return Status::kCapacityExceeded;
+    return (saturated || nonfinite > 0) ? Status::kPartial : Status::kOk;
   }
 
   /// Per-virtual-channel complex calibration (see RangeMatchedFilter).
@@ -161,6 +196,31 @@ class FrontEnd {
   bool initialized() const { return initialized_; }
 
  private:
+  /// Sample tallies of one frame (check_frame).
+  struct FrameCheck {
+    std::size_t zero = 0;          ///< sample values exactly 0
+    std::size_t full_scale = 0;    ///< int16: -32768 or 32767
+    std::size_t over_ceiling = 0;  ///< float: |x| > max_abs_sample (NaN is left to rmf_)
+  };
+
+  // One pass over the cube before any processing (docs/reliability.md F2,
+  // ADC frames). Finite float samples near 1e35 pass the NaN/Inf check but
+  // overflow the power map, hence the ceiling.
+  template <class Sample>
+  FrameCheck check_frame(const RadarCubeT<Caps, Sample>& cube) const {
+    FrameCheck f;
+    for (const Sample x : cube.iq) {
+      if (x == Sample(0)) {
+        ++f.zero;
+      } else if constexpr (std::is_same_v<Sample, std::int16_t>) {
+        if (x == std::int16_t{-32768} || x == std::int16_t{32767}) ++f.full_scale;
+      } else {
+        if (x > max_abs_sample_ || x < -max_abs_sample_) ++f.over_ceiling;
+      }
+    }
+    return f;
+  }
+
   static std::uint32_t tick(const FrontEndStageTimes* t) {
     return (t != nullptr && t->clock != nullptr) ? t->clock() : 0u;
   }
@@ -241,8 +301,11 @@ class FrontEnd {
     return off;
   }
 
+  /// Returns the number of detections dropped for a non-finite amplitude
+  /// (F3: a noise estimate at the min_noise_power floor under a huge peak).
   template <std::size_t N>
-  void emit(Scan<float, N>& out) {
+  std::size_t emit(Scan<float, N>& out) {
+    std::size_t nonfinite = 0;
     for (std::size_t i = 0; i < peaks_.size(); ++i) {
       const PeakCandidate& c = peaks_[i];
       const std::size_t g = c.range_bin;
@@ -266,12 +329,18 @@ class FrontEnd {
       m.range_m = static_cast<float>((static_cast<double>(g) + static_cast<double>(dg)) * range_bin_m_);
       m.azimuth_rad = bearing_to_azimuth(bearing);
       m.amplitude = std::sqrt(ae.power / c.noise);
+      if (!is_finite(m.amplitude)) {
+        ++nonfinite;
+        ++counters_.detections_nonfinite;
+        continue;
+      }
       m.doppler_mps =
           static_cast<float>(dop_.velocity_mps(static_cast<double>(d) + static_cast<double>(dd)));
       // Capacity was reserved in detect() (cap <= N), so this cannot fail.
       if (out.measurements.push_back(m) != Status::kOk) ++counters_.detections_over_cap;
       ++counters_.detections;
     }
+    return nonfinite;
   }
 
   RangeMatchedFilter<Caps> rmf_{};
@@ -286,6 +355,8 @@ class FrontEnd {
   std::size_t max_detections_ = 0;
   std::size_t last_dropped_ = 0;
   float min_noise_ = 0.0f;
+  float max_abs_sample_ = 1e6f;
+  std::size_t saturated_limit_ = 0;
   bool initialized_ = false;
 };
 

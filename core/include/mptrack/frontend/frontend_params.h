@@ -85,6 +85,14 @@ struct FrontEndParams {
                                        ///< keeps amplitudes finite on noiseless data; >= 0
   std::size_t angle_refine_iterations = 24;  ///< golden-section steps of the steering-vector MF,
                                              ///< 0 = grid angle only, <= 64
+  // Frame-level input checks (docs/reliability.md F2 and "ADC frames").
+  double max_abs_sample = 1e6;         ///< float cubes: a frame with |re| or |im| above this is
+                                       ///< refused (kInvalidInput) [cube units], in [1e-6, 1e9].
+                                       ///< Beyond ~1e15 the float power map overflows to Inf (F2);
+                                       ///< 1e6 is 1e6 times int16 full scale.
+  double saturation_fraction = 0.01;   ///< int16 cubes: a frame with more than this fraction of
+                                       ///< its sample values at full scale (-32768 or 32767) is
+                                       ///< flagged saturated (processed, kPartial) [-], in [0, 1]
 };
 
 /// lambda [m].

@@ -80,6 +80,7 @@ class GnnTracker {
     counters_ = TrackerCounters{};
     next_id_ = 1;
     clock_.reset();
+    clock_.set_max_gap_s(params_.max_gap_s);
     initialized_ = true;
     return Status::kOk;
   }
@@ -89,14 +90,24 @@ class GnnTracker {
   ///    accepted scan): scan refused whole, tracks untouched, outputs()
   ///    empty, counters().scans_rejected incremented;
   ///  - kPartial: processed, but some measurements were NaN/Inf or outside
-  ///    the surveillance region (skipped, counted in measurements_invalid);
+  ///    the surveillance region (skipped, counted in measurements_invalid)
+  ///    or exact duplicates (measurements_duplicate, measurement.h);
   ///  - kOk otherwise.
+  /// A scan more than params().max_gap_s after the previous one first
+  /// drops every track (counted in gap_resets and tracks_deleted) and is
+  /// then processed as the first scan of a new run (scan_clock.h).
   /// Births refused because kMaxTracks tracks are alive are counted in
   /// track_cap_hits (the scan still succeeds); covariance repairs in
   /// numerical_repairs.
   Status step(const ScanType& scan) {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
+    if (clock_.gap_exceeded(scan.time_us)) {
+      ++counters_.gap_resets;
+      counters_.tracks_deleted += tracks_.size();
+      tracks_.clear();
+      clock_.restart();
+    }
     const std::size_t invalid = select_valid(scan);
     if (clock_.has_time()) {
       const T dt = clock_.elapsed_s(scan.time_us, T(0));
@@ -129,10 +140,12 @@ class GnnTracker {
   const StaticVector<GnnTrack<T>, kMaxTracks>& tracks() const { return tracks_; }
 
  private:
-  // Step 1: indices of the valid measurements, in scan order.
+  // Step 1: indices of the valid measurements, in scan order; exact
+  // duplicates (measurement.h, F11) dropped. Returns the number rejected.
   std::size_t select_valid(const ScanType& scan) {
     valid_.clear();
     std::size_t invalid = 0;
+    std::size_t duplicate = 0;
     counters_.measurements_in += scan.measurements.size();
     for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
       const Measurement<T>& m = scan.measurements[j];
@@ -140,15 +153,20 @@ class GnnTracker {
                       !(m.range_m < params_.min_range_m) && !(m.range_m > params_.max_range_m) &&
                       !(m.azimuth_rad < params_.min_azimuth_rad) &&
                       !(m.azimuth_rad > params_.max_azimuth_rad);
-      if (ok) {
+      kept_[j] = false;
+      if (!ok) {
+        ++invalid;
+      } else if (is_duplicate(scan, j, [this](std::size_t i) { return kept_[i]; })) {
+        ++duplicate;  // measurement.h: the first copy is kept
+      } else {
+        kept_[j] = true;
         // Cannot overflow: valid_ has the scan's capacity.
         static_cast<void>(valid_.push_back(static_cast<std::uint16_t>(j)));
-      } else {
-        ++invalid;
       }
     }
     counters_.measurements_invalid += invalid;
-    return invalid;
+    counters_.measurements_duplicate += duplicate;
+    return invalid + duplicate;
   }
 
   // Step 3: fills assigned_[track] (index into valid_, or -1) and
@@ -277,6 +295,7 @@ class GnnTracker {
   TrackerCounters counters_{};
   // Per-step scratch (members, not stack: rule 1).
   StaticVector<std::uint16_t, kMaxMeasurements> valid_;           ///< scan indices of valid measurements
+  std::array<bool, kMaxMeasurements> kept_{};                     ///< per scan index: in valid_
   std::array<bool, kMaxMeasurements> measurement_used_{};         ///< per valid measurement
   std::array<std::int32_t, kMaxTracks> assigned_{};               ///< per track: valid index or -1
   std::array<PolarPrediction<T>, kMaxTracks> pred_{};

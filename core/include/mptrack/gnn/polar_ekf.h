@@ -128,7 +128,15 @@ void polar_initiate(T range_m, T azimuth_rad, T sigma_range_m, T sigma_azimuth_r
   x(0) = range_m * c;
   x(2) = range_m * s;
   const T var_r = sigma_range_m * sigma_range_m;
-  const T var_a = range_m * range_m * sigma_azimuth_rad * sigma_azimuth_rad;  // cross-range [m^2]
+  // Cross-range std floored at 1e-3 x the range std: near r = 0 the polar
+  // covariance is rank one (fuzz_params, docs/reliability.md F12), and the
+  // floor keeps the position block's condition number <= 1e6, which float
+  // factorises. GnnParams bounds the other side (max_range_m sigma_az <=
+  // 1e3 sigma_r). The floor only binds below r = 1e-3 sigma_r / sigma_az
+  // (2 cm with the defaults).
+  const T r_floor = T(1e-3) * sigma_range_m / sigma_azimuth_rad;
+  const T r_cov = range_m > r_floor ? range_m : r_floor;
+  const T var_a = r_cov * r_cov * sigma_azimuth_rad * sigma_azimuth_rad;  // cross-range [m^2]
   P = CvCovariance<T>::Zero();
   P(0, 0) = c * c * var_r + s * s * var_a;
   P(2, 2) = s * s * var_r + c * c * var_a;

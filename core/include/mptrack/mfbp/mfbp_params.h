@@ -92,6 +92,8 @@ struct MfbpParams {
   T az_max_rad = T(1.0471975511965976);   ///< max azimuth [rad] (60 deg)
 
   // --- kinematics (spec 2.1, 2.6) ---
+  T max_gap_s = T(60);                ///< a scan later than this after the previous one restarts
+                                      ///< the tracker (scan_clock.h, docs/reliability.md F1) [s]
   T scan_period_s = T(1.25);          ///< nominal T [s]; only used for birth gates and the
                                       ///< first prediction; dt comes from the timestamps
   T process_noise_var = T(0.01);      ///< sigma_v^2 [(m/s^2)^2] (white-acceleration CV model) while
@@ -99,7 +101,7 @@ struct MfbpParams {
   T manoeuvre_noise_var_max = T(1);   ///< [impl] ceiling of the manoeuvre-adaptive level
                                       ///< (MfbpTracker::manoeuvre_noise): the paper's 0.01 cannot
                                       ///< follow S1's |a_y| = 0.33 m/s^2 for 122 s (spec 4.1, A19).
-                                      ///< Equal to process_noise_var = fixed level (paper)
+                                      ///< At or below process_noise_var: fixed level (paper)
                                       ///< [(m/s^2)^2]
   T manoeuvre_fading = T(0.97);       ///< [impl] fading factor rho of the innovation mean
                                       ///< (memory ~1/(1 - rho) = 33 scans) [-]
@@ -128,6 +130,8 @@ struct MfbpParams {
 
   // --- amplitude (spec 2.4, 2.5) ---
   T amplitude_threshold = T(0.715);   ///< d: detector threshold on the normalised envelope [-]
+  T max_amplitude = T(1e4);           ///< larger amplitudes are invalid (measurements_invalid):
+                                      ///< m^2 must stay finite in float sums (reliability F4) [-]
   int swerling = 1;                   ///< 1 (n = 1) or 3 (n = 2)
   bool use_amplitude = true;          ///< false: kinematics only (MP-RMTT-KI)
   T pd_no_amplitude = T(0.9);         ///< Pd(s=1) used when use_amplitude == false [-] [impl]
@@ -154,7 +158,14 @@ struct MfbpParams {
   T mp_tolerance = T(1e-3);           ///< delta^MP on max |delta a_hat| [-]
   std::size_t bp_max_iterations = 200;  ///< r_max^BP (paper 1000; spec 3.11 caps at 200)
   T bp_tolerance = T(1e-6);           ///< delta^BP on max |delta eta| [-]
-  T bp_damping = T(0.9);              ///< gamma: eta <- gamma eta_old + (1-gamma) eta_new [-]
+  T bp_damping = T(0);                ///< gamma: eta <- gamma eta_old + (1-gamma) eta_new [-].
+                                      ///< [impl] Paper 0.9. Damping does not move BP's fixed
+                                      ///< point, only the path to it; the association BP converges
+                                      ///< undamped (Williams and Lau 2014). S2, float online
+                                      ///< filter, 340 scans, ~910 BP runs: gamma 0.9 / 0.5 / 0.3 /
+                                      ///< 0 take 147 / 41 / 28 / 16 iterations per run, with 225 /
+                                      ///< 15 / 5 / 3 runs at the 200 cap; S2 OSPA (double, 10
+                                      ///< runs) equal for 0.5, 0.3 and 0
   T w_min = T(1e-6);                  ///< skip pseudo-measurement updates below this weight (A8) [-]
 
   // --- clutter (spec 2.7, 2.8, 3.6, 3.8) ---
@@ -177,10 +188,14 @@ struct MfbpParams {
   bool late_birth = true;             ///< [impl] second birth pass after the MP loop, using the
                                       ///< association beliefs of new scans (see mfbp_tracker.h)
   T unexplained_threshold = T(0.2);   ///< measurement "unexplained" if sum_i a_ij below [-]
-  T birth_max_component_share = T(1);  ///< [impl] no birth from a measurement that Gaussian
-                                       ///< clutter components explain with at least this
-                                       ///< probability; 1 (default) = spec 3.10. Lower values
-                                       ///< save time in chaff but also block targets there.
+  T birth_max_component_share = T(0.9);  ///< [impl] no birth from a measurement that Gaussian
+                                         ///< clutter components explain with at least this
+                                         ///< probability; 1 = spec 3.10. With 1, S2's chaff
+                                         ///< starts ~4 600 tentative tracks per run (vs ~2 000)
+                                         ///< and fills the 64-track table on ~40% of scans, so
+                                         ///< real targets cannot be born: S2 OSPA 122.7 m vs 89.9
+                                         ///< m at 0.9 (docs/results/seed000-s1.md). Lower values
+                                         ///< also block targets inside chaff.
   T confirm_threshold = T(0.75);      ///< confirm when b_s(1) >= this at any window scan [-]
   T delete_threshold = T(0.5);        ///< delete after delete_run scans with b_s(1) below [-]
   std::size_t delete_run = 5;         ///< consecutive low-visibility scans before deletion. [impl]
@@ -252,9 +267,9 @@ Status validate(const MfbpParams<T>& p, std::size_t max_window) {
   const T span_a = p.az_max_rad - p.az_min_rad;
   MPTRACK_TRY(check(!(span_r * span_a < kMinVolume)));
   MPTRACK_TRY(check(p.scan_period_s > T(0) && !(p.scan_period_s > T(3600))));
+  MPTRACK_TRY(check_range(p.max_gap_s, T(1e-3), T(1e6)));
   MPTRACK_TRY(check(p.process_noise_var > T(0) && !(p.process_noise_var > T(1e6))));
-  MPTRACK_TRY(check(p.manoeuvre_noise_var_max >= p.process_noise_var &&
-                    !(p.manoeuvre_noise_var_max > T(1e6))));
+  MPTRACK_TRY(check(p.manoeuvre_noise_var_max > T(0) && !(p.manoeuvre_noise_var_max > T(1e6))));
   MPTRACK_TRY(check(p.manoeuvre_fading >= T(0) && p.manoeuvre_fading < T(1)));
   MPTRACK_TRY(check_range(p.sigma_r_m, T(1e-3), T(1e5)));
   MPTRACK_TRY(check_range(p.sigma_az_rad, T(1e-6), T(1)));
@@ -264,6 +279,7 @@ Status validate(const MfbpParams<T>& p, std::size_t max_window) {
   MPTRACK_TRY(check_range(p.sigma_doppler_mps, T(1e-3), T(1e4)));
   MPTRACK_TRY(check(p.doppler_span_mps > T(0) && !(p.doppler_span_mps > T(1e6))));
   MPTRACK_TRY(check(p.amplitude_threshold > T(0) && !(p.amplitude_threshold > T(1e3))));
+  MPTRACK_TRY(check(p.max_amplitude > p.amplitude_threshold && !(p.max_amplitude > T(1e15))));
   MPTRACK_TRY(check(p.swerling == 1 || p.swerling == 3));
   MPTRACK_TRY(check_open_probability(p.pd_no_amplitude));
   MPTRACK_TRY(check_range(p.forgetting_target, T(1), T(10)));

@@ -66,6 +66,8 @@
 #include "mptrack/mfbp/target_filter.h"
 #include "mptrack/mfbp/track_birth.h"
 #include "mptrack/mfbp/visibility_hmm.h"
+#include "mptrack/profile.h"
+#include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
@@ -129,8 +131,8 @@ class MfbpTracker {
     gate_overflows_ = 0;
     bp_runs_ = 0;
     bp_iterations_ = 0;
-    have_time_ = false;
-    last_time_us_ = 0;
+    clock_.reset();
+    clock_.set_max_gap_s(params_.max_gap_s);
     // Clutter priors at "scan -1".
     uniform_.ig0.a = params.uniform_cnr_prior_shape;
     uniform_.ig0.b = (T(1) + params.uniform_cnr_prior) * (params.uniform_cnr_prior_shape - T(1));
@@ -155,19 +157,17 @@ class MfbpTracker {
   /// kCapacityExceeded if an internal cap was hit (see the file comment;
   /// takes precedence over kPartial). Both are successes with losses.
   Status step(const ScanType& scan) {
-    if (!initialized_) {
-      ++counters_.scans_rejected;
-      return Status::kNotInitialized;
-    }
-    if (have_time_ && !(scan.time_us > last_time_us_)) {
-      ++counters_.scans_rejected;
-      return Status::kOutOfOrder;
-    }
+    MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
     outputs_.clear();
     step_cap_hit_ = false;
-    have_time_ = true;
-    last_time_us_ = scan.time_us;
+    if (clock_.gap_exceeded(scan.time_us)) {
+      restart_after_gap();
+      clock_.restart();
+    }
+    clock_.advance(scan.time_us);
     ++counters_.scans;
+    MPTRACK_PROFILE_STEP(g_mfbp);
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kInput);
     const bool partial = store_scan(scan);
     ++n_win_;
     if (n_win_ >= params_.window_length) {
@@ -182,6 +182,7 @@ class MfbpTracker {
     if (!initialized_) return Status::kNotInitialized;
     outputs_.clear();
     step_cap_hit_ = false;
+    MPTRACK_PROFILE_STEP(g_mfbp);
     if (n_win_ > 0) process_window(n_win_);
     return step_cap_hit_ ? Status::kCapacityExceeded : Status::kOk;
   }
@@ -291,6 +292,28 @@ class MfbpTracker {
            !(az > params_.az_max_rad);
   }
 
+  /// Max-gap rule (scan_clock.h, docs/reliability.md F1): the scans still
+  /// in the window are finalised first (their estimates go to outputs(), so
+  /// nothing accepted is lost), then every track and Gaussian clutter
+  /// component is dropped and the scan history cleared; the uniform clutter
+  /// and the Dirichlet state carry over.
+  void restart_after_gap() {
+    ++counters_.gap_resets;
+    if (n_win_ > 0) process_window(n_win_);
+    for (auto& t : tracks_) {
+      if (!t.alive) continue;
+      t.alive = false;
+      ++counters_.tracks_deleted;
+    }
+    for (auto& c : comps_) {
+      if (!c.alive) continue;
+      c.alive = false;
+      ++counters_.clutter_deleted;
+    }
+    n_hist_ = 0;
+    n_win_ = 0;
+  }
+
   /// Copies the valid measurements of `scan` to the next window slot.
   /// Returns true if some were rejected.
   bool store_scan(const ScanType& scan) {
@@ -307,15 +330,23 @@ class MfbpTracker {
       ++counters_.measurements_in;
       const bool ok_values = is_finite(m.range_m) && is_finite(m.azimuth_rad) &&
                              is_finite(m.amplitude) && m.amplitude > d &&
+                             !(m.amplitude > params_.max_amplitude) &&
                              in_region(m.range_m, m.azimuth_rad) &&
                              (!s.doppler || (is_finite(m.doppler_mps) &&
                                              !(m.doppler_mps > params_.doppler_span_mps) &&
                                              !(m.doppler_mps < -params_.doppler_span_mps)));
+      kept_[j] = false;
       if (!ok_values) {
         ++counters_.measurements_invalid;
         rejected = true;
         continue;
       }
+      if (is_duplicate(scan, j, [this](std::size_t i) { return kept_[i]; })) {
+        ++counters_.measurements_duplicate;  // the first copy is kept (measurement.h)
+        rejected = true;
+        continue;
+      }
+      kept_[j] = true;
       const std::size_t c = s.count++;
       s.r[c] = m.range_m;
       s.az[c] = m.azimuth_rad;
@@ -381,6 +412,7 @@ class MfbpTracker {
     // online filter, whose current scan is always new, depends on this).
     // Tracks born here enter the association from the next window on.
     if (params_.late_birth) {
+      MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
       const std::uint32_t first_new = next_track_id_;
       spawn_tracks(n);
       for (auto& t : tracks_) {
@@ -390,6 +422,7 @@ class MfbpTracker {
         }
       }
     }
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kOutput);
     confirm_tracks(n);
     for (std::size_t k = 0; k < finalize_count; ++k) emit_estimate(k);
     manage_tracks(n, finalize_count);
@@ -399,6 +432,7 @@ class MfbpTracker {
 
   // One MF sweep (spec 3.0 steps 2-5): Dirichlet, visibility, clutter, targets.
   void mf_sweep(std::size_t n) {
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kMfUpdate);
     if (params_.clutter_mode != ClutterMode::kKnown) clutter_sweep(n);
     for (auto& t : tracks_) {
       if (!t.alive) continue;
@@ -652,10 +686,11 @@ class MfbpTracker {
     const T q0 = params_.process_noise_var;
     const T rho = params_.manoeuvre_fading;
     const T chi = bias.squaredNorm() * (T(1) + rho) / (T(2) * (T(1) - rho));
-    if (!(chi > T(1))) return q0;
+    const T q_max = params_.manoeuvre_noise_var_max;
+    if (!(chi > T(1)) || !(q_max > q0)) return q0;
     const T chi2 = chi * chi;
     const T q = q0 * chi2 * chi2;
-    return q < params_.manoeuvre_noise_var_max ? q : params_.manoeuvre_noise_var_max;
+    return q < q_max ? q : q_max;
   }
 
   /// u_bar <- rho u_bar + (1 - rho) u; a pseudo-measurement of weight
@@ -750,6 +785,7 @@ class MfbpTracker {
   /// Local evidence (spec 3.2-3.3), loopy BP (spec 3.5), and storage of the
   /// beliefs and statistics of window scan k. Returns max |delta a_hat|.
   T associate_scan(std::size_t k) {
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kEvidence);
     ScanSlot& s = win(k);
     const std::size_t nm = s.count;
     const T d = params_.amplitude_threshold;
@@ -948,6 +984,7 @@ class MfbpTracker {
       bp_track[nbt++] = i;
     }
 
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBp);
     const auto res = bp_.run(params_.bp_damping, params_.bp_tolerance, params_.bp_max_iterations);
     if (!res.converged) ++counters_.bp_not_converged;
     bp_iterations_ += res.iterations;
@@ -1090,6 +1127,7 @@ class MfbpTracker {
   // shortest lag, then the nearest first point), no measurement in two pairs;
   // the best birth_max_per_window by amplitude sum are born.
   void spawn_tracks(std::size_t n) {
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
     mark_unexplained();
     std::array<BirthCandidate, 32> cand{};
     std::size_t nc = 0;
@@ -1107,6 +1145,10 @@ class MfbpTracker {
           std::size_t best_j = kMaxMeas;
           for (std::size_t j1 = 0; j1 < store_[s1].count; ++j1) {
             if (!unexplained(s1, j1)) continue;
+            if (!mfbp::birth_range_gate(store_[s1].r[j1], store_[s2].r[j2], dt, params_.v_max_x_mps,
+                                        params_.v_max_y_mps)) {
+              continue;
+            }
             const Vec2 p1 = mfbp::cartesian_of_polar(store_[s1].r[j1], store_[s1].az[j1]);
             if (!mfbp::birth_gate(p1, p2, dt, params_.v_max_x_mps, params_.v_max_y_mps)) continue;
             const T dist = (p2 - p1).squaredNorm();
@@ -1191,6 +1233,7 @@ class MfbpTracker {
 
   // Clutter-component birth by grid seeding (spec 3.10 [impl]).
   void spawn_components(std::size_t n) {
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
     const std::size_t pool_first = (n_hist_ + n > kMaxWindow) ? n_hist_ + n - kMaxWindow : 0;
     const std::size_t pool_end = n_hist_ + n;
     const std::size_t n_pool = pool_end - pool_first;
@@ -1571,8 +1614,8 @@ class MfbpTracker {
   std::uint32_t next_track_id_ = 1;
   std::uint32_t next_comp_id_ = 1;
   std::uint64_t finalized_ = 0;
-  bool have_time_ = false;
-  std::uint64_t last_time_us_ = 0;
+  ScanClock clock_{};
+  std::array<bool, kMaxMeas> kept_{};  ///< store_scan: input measurement j kept (duplicate rule)
   bool step_cap_hit_ = false;
 };
 

@@ -30,6 +30,18 @@ Mat2<T> cartesian_position_covariance(T range_m, T az_rad, T sigma_r, T sigma_az
   return P;
 }
 
+/// Necessary condition for birth_gate, on ranges alone: |r2 - r1| <= |p2 - p1|
+/// (triangle inequality) <= dt |v_max|. The 1e-3 relative and 1 m slack cover
+/// the rounding of r [cos, sin] in float, so no pair that passes birth_gate is
+/// rejected here. Saves the two sines and cosines of every far pair.
+template <class T>
+bool birth_range_gate(T r1_m, T r2_m, T dt_s, T v_max_x, T v_max_y) {
+  const T reach = dt_s * std::sqrt(v_max_x * v_max_x + v_max_y * v_max_y);
+  const T dr = r2_m > r1_m ? r2_m - r1_m : r1_m - r2_m;
+  const T r = r2_m > r1_m ? r2_m : r1_m;
+  return !(dr > reach + T(1e-3) * r + T(1));
+}
+
 /// True if a measurement pair passes the v_max box gate (spec 2.9):
 /// |dx| <= dt v_max_x and |dy| <= dt v_max_y.
 template <class T>

@@ -32,23 +32,30 @@ template <class T, std::size_t MaxMeasurements>
 struct MeasurementBatch {
   std::size_t n = 0;
   std::size_t invalid = 0;
+  std::size_t duplicate = 0;  ///< exact duplicates of a valid earlier one (measurement.h, F11)
   std::array<Vec2<T>, MaxMeasurements> z{};
   std::array<AmplitudeTerms<T>, MaxMeasurements> amp{};
   std::array<bool, MaxMeasurements> valid{};
 
   /// Converts and checks: finite, inside the region, amplitude >= d when
-  /// amplitude is used. Invalid ones stay in place (flag false) so
-  /// measurement indices keep their meaning.
+  /// amplitude is used, and amplitude <= p.max_amplitude with its clutter
+  /// term a^(2b) <= FilterParams::kMaxAmplitudeTerm (docs/reliability.md
+  /// F4: larger values overflow the amplitude moments). Exact duplicates
+  /// of a valid earlier measurement are flagged too and counted in
+  /// `duplicate` (measurement.h, F11). Invalid ones stay in place (flag
+  /// false) so measurement indices keep their meaning.
   template <std::size_t N>
   void load(const Scan<T, N>& scan, const FilterParams<T>& p, const MeasurementModel<T>& mm) {
     static_assert(N <= MaxMeasurements, "batch smaller than the scan");
     n = scan.measurements.size();
     invalid = 0;
+    duplicate = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const Measurement<T>& y = scan.measurements[i];
       bool ok = is_finite(y.range_m) && is_finite(y.azimuth_rad) && is_finite(y.amplitude) &&
                 y.amplitude > T(0);
       if (ok && p.use_amplitude && y.amplitude < p.threshold) ok = false;
+      if (ok && p.use_amplitude && y.amplitude > p.max_amplitude) ok = false;
       if (ok) {
         z[i] = mm.vector_of(y);
         ok = z[i](0) >= p.region_min0 && z[i](0) <= p.region_max0 && z[i](1) >= p.region_min1 &&
@@ -61,6 +68,13 @@ struct MeasurementBatch {
       }
       amp[i] = p.use_amplitude ? amplitude_terms(y.amplitude, p.threshold, p.weibull_shape)
                                : AmplitudeTerms<T>{};
+      if (p.use_amplitude && !(amp[i].clutter_excess <= FilterParams<T>::kMaxAmplitudeTerm)) {
+        valid[i] = false;  // a^(2b) too large for this Weibull shape b
+        ++invalid;
+      } else if (is_duplicate(scan, i, [this](std::size_t k) { return valid[k]; })) {
+        valid[i] = false;
+        ++duplicate;
+      }
     }
   }
 };

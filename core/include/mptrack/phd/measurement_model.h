@@ -96,8 +96,13 @@ struct MeasurementModel {
     T c = T(0);
     dmath::dsincos(z(1), s, c);
     p << z(0) * c, z(0) * s;
+    // Cross-range spread floored at 1e-3 x the range std (as in the GNN's
+    // polar_initiate): at r -> 0 J R J^T is rank one. Binds only below
+    // r = 1e-3 sigma_r / sigma_az.
+    const T r_floor = T(1e-3) * std::sqrt(R(0, 0) / R(1, 1));
+    const T r_cov = z(0) > r_floor ? z(0) : r_floor;
     Mat2<T> J;
-    J << c, -z(0) * s, s, z(0) * c;
+    J << c, -r_cov * s, s, r_cov * c;
     cov = J * R * J.transpose();
   }
 };

@@ -82,6 +82,7 @@ class PhdFilter {
     next_label_ = 1;
     scan_index_ = 0;
     clock_.reset();
+    clock_.set_max_gap_s(p.max_gap_s);
     initialized_ = true;
     return Status::kOk;
   }
@@ -91,12 +92,20 @@ class PhdFilter {
   Status step(const ScanType& scan) {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
+    if (clock_.gap_exceeded(scan.time_us)) {  // max-gap rule (scan_clock.h, F1)
+      ++counters_.gap_resets;
+      components_.clear();
+      births_.clear();
+      cardinality_.init();
+      clock_.restart();
+    }
     const T dt = clock_.elapsed_s(scan.time_us, params_.scan_period_s);
     clock_.advance(scan.time_us);
     ++counters_.scans;
     counters_.measurements_in += scan.measurements.size();
     batch_.load(scan, params_, model_);
     counters_.measurements_invalid += batch_.invalid;
+    counters_.measurements_duplicate += batch_.duplicate;
     const std::uint64_t cap_before = counters_.track_cap_hits;
 
     predict(dt);
@@ -112,7 +121,7 @@ class PhdFilter {
     extract(scan.time_us);
     ++scan_index_;
     if (counters_.track_cap_hits != cap_before) return Status::kCapacityExceeded;
-    return batch_.invalid > 0 ? Status::kPartial : Status::kOk;
+    return batch_.invalid + batch_.duplicate > 0 ? Status::kPartial : Status::kOk;
   }
 
   /// Online filter: nothing is held back.
@@ -235,6 +244,19 @@ class PhdFilter {
 
   // CPHD factors (cardinality.h): ln of the missed factor, and per
   // measurement ln(<A^1(Z\z),p> / (W <A^0(Z),p>)) - ln kappa(z).
+  //
+  // ln R'_z is capped at kMaxLogRatio (docs/reliability.md F8). A strong
+  // measurement far from the known clutter amplitude scale has
+  // ln kappa(z) ~ -1e12 (the Weibull term -a^(2b)/sigma0), so ln R'_z ~ 1e12,
+  // and l0, l1 and the leave-one-out sums all carry it: in float their
+  // differences keep no digit (ulp(1e12) = 6e4) and a weight became
+  // e^(6e4) = +Inf. Capping lowers the clutter intensity used for that z
+  // to ln kappa_eff = ln sum w q - ln W - kMaxLogRatio: the measurement is
+  // then a target with probability 1 - e^-200, which is 1 in float. Below
+  // the cap the code path is the old one, bit for bit (golden vectors
+  // unchanged); above it the old result had lost its precision anyway.
+  static constexpr T kMaxLogRatio = T(200);
+
   void cphd_factors(T W, T missed, T& log_missed_factor) {
     const T log_w = dmath::dlog(W);
     const T phi = clamp_probability(missed / W);
@@ -244,7 +266,11 @@ class PhdFilter {
     for (std::size_t i = 0; i < batch_.n; ++i) {
       if (!batch_.valid[i] || !(log_target_sum_[i] > Cardinality<T, kMaxCardinality>::kLogZero)) continue;
       active_index_[active] = i;
-      log_ratio_[active] = log_target_sum_[i] - clutter_.log_intensity(i) - log_w;
+      const T lk = clutter_.log_intensity(i);
+      const T lr = log_target_sum_[i] - lk - log_w;
+      const bool capped = !(lr < kMaxLogRatio);
+      log_ratio_[active] = capped ? kMaxLogRatio : lr;
+      log_kappa_eff_[active] = capped ? log_target_sum_[i] - log_w - kMaxLogRatio : lk;
       ++active;
     }
     const std::size_t none = active;  // skip index that matches nothing
@@ -258,7 +284,7 @@ class PhdFilter {
       top = cardinality_.esf(log_ratio_.data(), active, a, esf_loo_);
       cardinality_.log_a(esf_loo_, top, 1, log_phi, la_loo_);
       const std::size_t i = active_index_[a];
-      log_detect_factor_[i] = cardinality_.log_inner(la_loo_) - l0 - log_w - clutter_.log_intensity(i);
+      log_detect_factor_[i] = cardinality_.log_inner(la_loo_) - l0 - log_w - log_kappa_eff_[a];
     }
     cardinality_.update(la0_, l0);
   }
@@ -297,9 +323,19 @@ class PhdFilter {
     const std::size_t n = components_.size();
     const std::size_t want = Cardinalized ? cardinality_.map() : Caps::kMaxTargets;
     std::size_t reported = 0;
+    // A weight that is not finite (none is expected since F8) is never
+    // cast: the component is skipped and counted in numerical_repairs,
+    // and at most kMaxTargets copies are made of any weight.
     for (std::size_t k = 0; k < n && reported < want; ++k) {
       const T w = components_[k].weight;
-      std::size_t copies = static_cast<std::size_t>(w + T(0.5));
+      if (!is_finite(w) || !is_finite(components_[k].x(0)) || !is_finite(components_[k].x(2))) {
+        ++counters_.numerical_repairs;
+        continue;
+      }
+      const T rounded = w + T(0.5);
+      std::size_t copies = rounded < static_cast<T>(Caps::kMaxTargets)
+                               ? static_cast<std::size_t>(rounded > T(0) ? rounded : T(0))
+                               : Caps::kMaxTargets;
       if (!Cardinalized && copies == 0 && w > params_.extract_threshold) copies = 1;
       if (Cardinalized && copies == 0) copies = 1;
       for (std::size_t c = 0; c < copies && reported < want; ++c, ++reported) {
@@ -343,6 +379,7 @@ class PhdFilter {
   std::array<T, Caps::kMaxMeasurements> target_prob_{};
   std::array<T, Caps::kMaxMeasurements> clutter_prob_{};
   std::array<T, Caps::kMaxMeasurements> log_ratio_{};
+  std::array<T, Caps::kMaxMeasurements> log_kappa_eff_{};  ///< ln kappa used per active z (F8 cap)
   std::array<std::size_t, Caps::kMaxMeasurements> active_index_{};
   std::array<T, kMaxCardinality + 1> esf_{}, esf_loo_{}, la0_{}, la1_{}, la_loo_{};
   Cardinality<T, kMaxCardinality> cardinality_;
