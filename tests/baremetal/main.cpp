@@ -84,7 +84,10 @@ extern "C" int app_main() {
   // MF-BP, both presets, a few scans each.
   const auto params = mptrack::seed000_default_params<float>();
   if (g_mfbp_default.init(params) != mptrack::Status::kOk) ++failures;
-  if (g_mfbp_small.init(params) != mptrack::Status::kOk) ++failures;
+  auto params_small = params;  // SmallBoardCaps: window <= 4 (caps.h)
+  params_small.window_length = 4;
+  params_small.slide = 2;
+  if (g_mfbp_small.init(params_small) != mptrack::Status::kOk) ++failures;
   for (std::uint32_t k = 0; k < 8; ++k) {
     fill_scan(g_scan, k, 40);
     (void)stack_root_mfbp_default_step();

@@ -15,8 +15,19 @@
 using namespace mptrack;
 
 namespace {
+/// SmallBoard's target, measurement and component caps with the paper's
+/// window 7 (SmallBoardCaps itself stops at window 4 to fit 64 KiB).
+struct TestCaps {
+  static constexpr std::size_t kMaxTargets = 16;
+  static constexpr std::size_t kMaxMeasurements = 64;
+  static constexpr std::size_t kMaxClutterComponents = 4;
+  static constexpr std::size_t kMaxWindow = 7;
+};
+}  // namespace
 
-using Tracker = MfbpTracker<float, SmallBoardCaps>;
+namespace {
+
+using Tracker = MfbpTracker<float, TestCaps>;
 
 void record(const Tracker& trk, test::GoldenFile& g, const std::string& tag) {
   for (const auto& est : trk.outputs()) {
@@ -47,7 +58,7 @@ void run_case(std::size_t window, std::size_t slide, const std::string& tag, tes
   p.uniform_rate_per_scan = 10.0f;
   REQUIRE(trk->init(p) == Status::kOk);
   mfbp_test::Lcg rng;
-  auto scan = std::make_unique<Scan<float, SmallBoardCaps::kMaxMeasurements>>();
+  auto scan = std::make_unique<Scan<float, TestCaps::kMaxMeasurements>>();
   for (int k = 0; k < 30; ++k) {
     mfbp_test::make_scan(rng, k, 10, *scan);
     CHECK(trk->step(*scan) == Status::kOk);

@@ -16,6 +16,17 @@
 using namespace mptrack;
 
 namespace {
+/// SmallBoard's target, measurement and component caps with the paper's
+/// window 7 (SmallBoardCaps itself stops at window 4 to fit 64 KiB).
+struct TestCaps {
+  static constexpr std::size_t kMaxTargets = 16;
+  static constexpr std::size_t kMaxMeasurements = 64;
+  static constexpr std::size_t kMaxClutterComponents = 4;
+  static constexpr std::size_t kMaxWindow = 7;
+};
+}  // namespace
+
+namespace {
 
 constexpr std::size_t kClutter = 10;
 
@@ -106,7 +117,7 @@ std::unique_ptr<MfbpTracker<T, Caps>> make_tracker(std::size_t window, std::size
 }  // namespace
 
 TEST_CASE("mfbp online filter confirms both targets near truth and no false track") {
-  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
+  auto trk = make_tracker<float, TestCaps>(1, 1);
   const auto reps = run(*trk, 40);
   check_tracking(reps, 10, 40);
   CHECK(trk->counters().scans == 40u);
@@ -114,7 +125,7 @@ TEST_CASE("mfbp online filter confirms both targets near truth and no false trac
 }
 
 TEST_CASE("mfbp online filter estimates the target SNR within 50 percent") {
-  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
+  auto trk = make_tracker<float, TestCaps>(1, 1);
   const auto reps = run(*trk, 40);
   int checked = 0;
   for (const auto& r : reps) {
@@ -130,15 +141,15 @@ TEST_CASE("mfbp online filter estimates the target SNR within 50 percent") {
 }
 
 TEST_CASE("mfbp smoother (window 7, slide 3) tracks both targets and finalises every scan") {
-  auto trk = make_tracker<float, SmallBoardCaps>(7, 3);
+  auto trk = make_tracker<float, TestCaps>(7, 3);
   const auto reps = run(*trk, 40);
   check_tracking(reps, 10, 40);
 }
 
 TEST_CASE("mfbp smoother outputs each scan exactly once, in order") {
-  auto trk = make_tracker<float, SmallBoardCaps>(7, 3);
+  auto trk = make_tracker<float, TestCaps>(7, 3);
   mfbp_test::Lcg rng;
-  Scan<float, SmallBoardCaps::kMaxMeasurements> scan;
+  Scan<float, TestCaps::kMaxMeasurements> scan;
   std::vector<std::uint32_t> idx;
   for (int k = 0; k < 20; ++k) {
     mfbp_test::make_scan(rng, k, kClutter, scan);
@@ -154,9 +165,9 @@ TEST_CASE("mfbp smoother outputs each scan exactly once, in order") {
 }
 
 TEST_CASE("mfbp step allocates nothing") {
-  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
+  auto trk = make_tracker<float, TestCaps>(1, 1);
   mfbp_test::Lcg rng;
-  auto scan = std::make_unique<Scan<float, SmallBoardCaps::kMaxMeasurements>>();
+  auto scan = std::make_unique<Scan<float, TestCaps::kMaxMeasurements>>();
   std::size_t allocs = 0;
   for (int k = 0; k < 15; ++k) {
     mfbp_test::make_scan(rng, k, kClutter, *scan);
@@ -169,9 +180,9 @@ TEST_CASE("mfbp step allocates nothing") {
 }
 
 TEST_CASE("mfbp rejects a non-increasing timestamp and leaves the state unchanged") {
-  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
+  auto trk = make_tracker<float, TestCaps>(1, 1);
   mfbp_test::Lcg rng;
-  Scan<float, SmallBoardCaps::kMaxMeasurements> scan;
+  Scan<float, TestCaps::kMaxMeasurements> scan;
   mfbp_test::make_scan(rng, 0, kClutter, scan);
   REQUIRE(trk->step(scan) == Status::kOk);
   const auto before = trk->counters();
@@ -182,8 +193,8 @@ TEST_CASE("mfbp rejects a non-increasing timestamp and leaves the state unchange
 }
 
 TEST_CASE("mfbp skips and counts invalid measurements with kPartial") {
-  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
-  Scan<float, SmallBoardCaps::kMaxMeasurements> scan;
+  auto trk = make_tracker<float, TestCaps>(1, 1);
+  Scan<float, TestCaps::kMaxMeasurements> scan;
   scan.time_us = 1000;
   Measurement<float> good{20000.0f, 0.5f, 2.0f, 0.0f};
   Measurement<float> nan_m{std::nanf(""), 0.5f, 2.0f, 0.0f};
@@ -199,8 +210,8 @@ TEST_CASE("mfbp skips and counts invalid measurements with kPartial") {
 }
 
 TEST_CASE("mfbp init rejects bad params and step before init is refused") {
-  MfbpTracker<float, SmallBoardCaps> trk;
-  Scan<float, SmallBoardCaps::kMaxMeasurements> scan;
+  MfbpTracker<float, TestCaps> trk;
+  Scan<float, TestCaps::kMaxMeasurements> scan;
   CHECK(trk.step(scan) == Status::kNotInitialized);
   MfbpParams<float> p;
   p.window_length = 8;  // > kMaxWindow
@@ -218,7 +229,7 @@ TEST_CASE("mfbp init rejects bad params and step before init is refused") {
 TEST_CASE("mfbp ablations (KI, NCE, KCE, first iteration only) still track both targets") {
   for (int variant = 0; variant < 4; ++variant) {
     CAPTURE(variant);
-    auto trk = std::make_unique<MfbpTracker<float, SmallBoardCaps>>();
+    auto trk = std::make_unique<MfbpTracker<float, TestCaps>>();
     MfbpParams<float> p = seed000_default_params<float>();
     p.window_length = 1;
     p.slide = 1;
@@ -267,8 +278,8 @@ double ospa_scan(const std::vector<Report>& reps, int k) {
 }  // namespace
 
 TEST_CASE("mfbp float and double runs agree in OSPA") {
-  auto tf = make_tracker<float, SmallBoardCaps>(1, 1);
-  auto td = make_tracker<double, SmallBoardCaps>(1, 1);
+  auto tf = make_tracker<float, TestCaps>(1, 1);
+  auto td = make_tracker<double, TestCaps>(1, 1);
   const auto rf = run(*tf, 40);
   const auto rd = run(*td, 40);
   double sum_f = 0, sum_d = 0;
@@ -370,11 +381,11 @@ TEST_CASE("mfbp Doppler, when present, is used: tracking holds and velocity erro
   for (int use = 0; use < 2; ++use) {
     // The truth is exact CV: the paper's sigma_v^2 = 0.01 makes the velocity
     // error measure what Doppler adds, not how fast a noisier model settles.
-    auto trk = make_tracker<float, SmallBoardCaps>(1, 1, 0.01f);
+    auto trk = make_tracker<float, TestCaps>(1, 1, 0.01f);
     mfbp_test::Lcg rng;
     mfbp_test::Lcg dop_rng;
     dop_rng.s = 12345u;
-    auto scan = std::make_unique<Scan<float, SmallBoardCaps::kMaxMeasurements>>();
+    auto scan = std::make_unique<Scan<float, TestCaps::kMaxMeasurements>>();
     std::vector<Report> reps;
     for (int k = 0; k < 30; ++k) {
       mfbp_test::make_scan(rng, k, kClutter, *scan);
@@ -420,7 +431,7 @@ TEST_CASE("mfbp Doppler, when present, is used: tracking holds and velocity erro
 }
 
 TEST_CASE("mfbp track IDs stay stable once both targets are confirmed") {
-  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
+  auto trk = make_tracker<float, TestCaps>(1, 1);
   const auto reps = run(*trk, 40);
   std::vector<std::uint32_t> ids;
   for (const auto& r : reps) {
@@ -433,9 +444,9 @@ TEST_CASE("mfbp track IDs stay stable once both targets are confirmed") {
 
 TEST_CASE("mfbp track cap overflow is counted and reported, never a crash") {
   // 40 well-separated targets on a grid, no clutter: more than the 16 tracks
-  // of SmallBoardCaps can hold.
-  auto trk = make_tracker<float, SmallBoardCaps>(1, 1);
-  Scan<float, SmallBoardCaps::kMaxMeasurements> scan;
+  // of TestCaps can hold.
+  auto trk = make_tracker<float, TestCaps>(1, 1);
+  Scan<float, TestCaps::kMaxMeasurements> scan;
   bool saw_cap = false;
   for (int k = 0; k < 8; ++k) {
     scan.time_us = 1000000u + static_cast<std::uint64_t>(k) * 1250000u;
@@ -450,15 +461,15 @@ TEST_CASE("mfbp track cap overflow is counted and reported, never a crash") {
     const Status s = trk->step(scan);
     CHECK((s == Status::kOk || s == Status::kCapacityExceeded));
     saw_cap = saw_cap || s == Status::kCapacityExceeded;
-    CHECK(trk->live_tracks() <= SmallBoardCaps::kMaxTargets);
+    CHECK(trk->live_tracks() <= TestCaps::kMaxTargets);
   }
   CHECK(saw_cap);
   CHECK(trk->counters().track_cap_hits > 0u);
-  CHECK(trk->live_tracks() == SmallBoardCaps::kMaxTargets);
+  CHECK(trk->live_tracks() == TestCaps::kMaxTargets);
 }
 
 TEST_CASE("mfbp known clutter map can be replaced between scans and is validated") {
-  MfbpTracker<float, SmallBoardCaps> trk;
+  MfbpTracker<float, TestCaps> trk;
   KnownClutter<float> kc;
   CHECK(trk.set_known_clutter(kc) == Status::kNotInitialized);
   MfbpParams<float> p = seed000_default_params<float>();
