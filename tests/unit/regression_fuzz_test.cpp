@@ -1,4 +1,4 @@
-// Regression tests for the fuzz findings of docs/reliability.md (F1-F12).
+// Regression tests for the fuzz findings of docs/reliability.md (F1-F13).
 // Each test rebuilds the fuzzer's input by hand (values from the harness's
 // MPTRACK_FUZZ_TRACE=1 output; the raw crash inputs are in fuzz/corpus/) and
 // asserts the documented behaviour. Every finding is fixed and its test
@@ -368,4 +368,68 @@ TEST_CASE("F10: FilterParams rejects a region whose volume overflows, and a nega
   c.region_min1 = -2e19f;
   c.region_max1 = 2e19f;
   CHECK(c.validate() == Status::kInvalidArgument);
+}
+
+namespace {
+struct FuzzMfbpCaps {  // the caps of fuzz/fuzz_mfbp.cpp
+  static constexpr std::size_t kMaxTargets = 4;
+  static constexpr std::size_t kMaxMeasurements = 12;
+  static constexpr std::size_t kMaxClutterComponents = 2;
+  static constexpr std::size_t kMaxWindow = 7;
+};
+}  // namespace
+
+TEST_CASE("F13: MF-BP tracks born from scans 1 ms apart keep an SPD covariance") {
+  // fuzz_mfbp (mfbp-crash-84c83c48): the same detection at 30 km in scans
+  // 1 ms apart starts a track whose two-point velocity std is ~1e5 m/s;
+  // a few updates later the float covariance had position-velocity
+  // correlation 1 and failed LLT. Scans 0-8 of the trace, every window.
+  struct In {
+    std::uint64_t t_us;
+    float r, az, amp;
+    bool present;
+  };
+  const In trace[] = {{1000106000u, 25764.707f, 0.518465519f, 5.25f, true},
+                      {1000212000u, 29964.707f, 0.522828817f, 5.25f, true},
+                      {1000213000u, 0.0f, 0.0f, 0.0f, false},
+                      {1000214000u, 25764.707f, 0.198146209f, 1.35000002f, true},
+                      {1000274000u, 30000.0f, 0.610865235f, 3.0f, true},
+                      {1000275000u, 30000.0f, 0.610865235f, 3.0f, true},
+                      {1000276000u, 30000.0f, 0.610865235f, 3.0f, true},
+                      {1000382000u, 34200.0f, 0.720821023f, 3.0f, true},
+                      {1000509000u, 39240.0f, 0.720821023f, 3.0f, true}};
+  for (const std::size_t window : {std::size_t{1}, std::size_t{3}, std::size_t{7}}) {
+    for (const bool amplitude : {true, false}) {
+      auto trk = std::make_unique<mptrack::MfbpTracker<float, FuzzMfbpCaps>>();
+      mptrack::MfbpParams<float> p;
+      p.window_length = window;
+      p.slide = window == 7 ? 3 : 1;
+      p.use_amplitude = amplitude;
+      REQUIRE(trk->init(p) == Status::kOk);
+      std::size_t reports = 0;
+      auto check_outputs = [&]() {
+        for (const auto& est : trk->outputs()) {
+          for (const auto& r : est.tracks) {
+            ++reports;
+            const Eigen::Matrix4f S = (r.covariance + r.covariance.transpose()) * 0.5f;
+            Eigen::LLT<Eigen::Matrix4f> llt(S);
+            CHECK(llt.info() == Eigen::Success);
+            CHECK(r.covariance.allFinite());
+          }
+        }
+      };
+      mptrack::MfbpTracker<float, FuzzMfbpCaps>::ScanType scan;
+      for (const In& in : trace) {
+        scan.time_us = in.t_us;
+        scan.measurements.clear();
+        if (in.present) REQUIRE(scan.measurements.push_back(meas(in.r, in.az, in.amp)) == Status::kOk);
+        const Status s = trk->step(scan);
+        CHECK((s == Status::kOk || s == Status::kPartial));
+        check_outputs();
+      }
+      REQUIRE(trk->flush() == Status::kOk);
+      check_outputs();
+      CHECK(trk->counters().tracks_born >= 1u);  // the 1 ms pair did start a track
+    }
+  }
 }

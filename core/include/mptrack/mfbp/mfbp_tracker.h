@@ -45,6 +45,7 @@
 //     (clutter_cap_hits); both make step return kCapacityExceeded.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -231,6 +232,7 @@ class MfbpTracker {
     std::array<T, kMaxMeas> target_share{};   ///< sum_i a_hat^t_ij
     std::array<T, kMaxMeas> uniform_share{};  ///< a_hat^c_0j
     std::array<std::uint8_t, kMaxMeas> consumed{};  ///< used by a two-point birth
+    std::array<std::uint16_t, kMaxMeas> by_range{};  ///< indices sorted by (range, index)
     std::array<NwStats, kSources> nw_stats{};       ///< per source slot (0 = uniform)
     std::array<AmpStats, kSources> amp_stats{};
   };
@@ -361,6 +363,11 @@ class MfbpTracker {
       s.nw_stats[src] = NwStats{};
       s.amp_stats[src] = AmpStats{};
     }
+    // Range order for the birth search (spawn_tracks); ties by index, so the
+    // order is unique and the same on every target.
+    for (std::size_t c = 0; c < s.count; ++c) s.by_range[c] = static_cast<std::uint16_t>(c);
+    std::sort(s.by_range.begin(), s.by_range.begin() + static_cast<std::ptrdiff_t>(s.count),
+              [&s](std::uint16_t a, std::uint16_t b) { return s.r[a] < s.r[b] || (!(s.r[b] < s.r[a]) && a < b); });
     // "No information" association for the tracks on this new scan (spec 3.1).
     const std::size_t k = n_win_;
     for (auto& t : tracks_) {
@@ -1143,16 +1150,33 @@ class MfbpTracker {
           const T dt = dt_s(store_[s1].time_us, store_[s2].time_us);
           T best_d = T(0);
           std::size_t best_j = kMaxMeas;
-          for (std::size_t j1 = 0; j1 < store_[s1].count; ++j1) {
-            if (!unexplained(s1, j1)) continue;
-            if (!mfbp::birth_range_gate(store_[s1].r[j1], store_[s2].r[j2], dt, params_.v_max_x_mps,
-                                        params_.v_max_y_mps)) {
+          // Only first points within the range reach can pass the box gate
+          // (birth_range_gate): start at the first one in range order, stop
+          // after the last, so the search is O(log N + hits), not O(N).
+          const ScanSlot& a1 = store_[s1];
+          const T r2 = store_[s2].r[j2];
+          std::size_t lo = 0, hi = a1.count;
+          while (lo < hi) {
+            const std::size_t mid = (lo + hi) / 2;
+            if (a1.r[a1.by_range[mid]] < r2 &&
+                !mfbp::birth_range_gate(a1.r[a1.by_range[mid]], r2, dt, params_.v_max_x_mps, params_.v_max_y_mps)) {
+              lo = mid + 1;
+            } else {
+              hi = mid;
+            }
+          }
+          for (std::size_t q = lo; q < a1.count; ++q) {
+            const std::size_t j1 = a1.by_range[q];
+            if (!mfbp::birth_range_gate(a1.r[j1], r2, dt, params_.v_max_x_mps, params_.v_max_y_mps)) {
+              if (a1.r[j1] > r2) break;  // beyond the reach: so is every later one
               continue;
             }
-            const Vec2 p1 = mfbp::cartesian_of_polar(store_[s1].r[j1], store_[s1].az[j1]);
+            if (!unexplained(s1, j1)) continue;
+            const Vec2 p1 = mfbp::cartesian_of_polar(a1.r[j1], a1.az[j1]);
             if (!mfbp::birth_gate(p1, p2, dt, params_.v_max_x_mps, params_.v_max_y_mps)) continue;
             const T dist = (p2 - p1).squaredNorm();
-            if (best_j == kMaxMeas || dist < best_d) {
+            // Nearest first point; ties go to the lowest index (as in index order).
+            if (best_j == kMaxMeas || dist < best_d || (!(best_d < dist) && j1 < best_j)) {
               best_d = dist;
               best_j = j1;
             }
@@ -1215,7 +1239,7 @@ class MfbpTracker {
       t.from_birth = true;
       mfbp::two_point_state(a.r[c.j1], a.az[c.j1], bsl.r[c.j2], bsl.az[c.j2],
                             dt_s(a.time_us, bsl.time_us), params_.sigma_r_m, params_.sigma_az_rad,
-                            t.x0, t.P0);
+                            params_.v_max_x_mps, params_.v_max_y_mps, t.x0, t.P0);
       t.ig0 = mfbp::birth_snr_belief(a.amp[c.j1], bsl.amp[c.j2], params_.amplitude_threshold,
                                      params_.ig_birth_shape, params_.ig_birth_scale_factor);
       t.vis0 = params_.visibility_at_birth;

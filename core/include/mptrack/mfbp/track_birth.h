@@ -57,16 +57,29 @@ bool birth_gate(const Vec2<T>& p1, const Vec2<T>& p2, T dt_s, T v_max_x, T v_max
 /// (p2 - p1)/dt; P_pos = J R J^T at y2; velocity covariance
 /// (P_pos1 + P_pos2)/dt^2; position-velocity cross term P_pos2/dt.
 template <class T>
-void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, Vec4<T>& x,
-                     Mat4<T>& P) {
+void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, T v_max_x, T v_max_y,
+                     Vec4<T>& x, Mat4<T>& P) {
   const Vec2<T> p1 = cartesian_of_polar(r1, az1);
   const Vec2<T> p2 = cartesian_of_polar(r2, az2);
   const Mat2<T> P1 = cartesian_position_covariance(r1, az1, sigma_r, sigma_az);
   const Mat2<T> P2 = cartesian_position_covariance(r2, az2, sigma_r, sigma_az);
   const Vec2<T> v = (p2 - p1) / dt_s;
   x << p2(0), v(0), p2(1), v(1);
-  const Mat2<T> Pv = (P1 + P2) / (dt_s * dt_s);
-  const Mat2<T> Pc = P2 / dt_s;
+  Mat2<T> Pv = (P1 + P2) / (dt_s * dt_s);
+  Mat2<T> Pc = P2 / dt_s;
+  // [impl] Two points a few ms apart say nothing about the velocity: the
+  // difference formula gives a velocity std of ~1e5 m/s, and after a few
+  // updates the float covariance, with position-velocity correlation ~1,
+  // is no longer positive definite (fuzz finding F13, docs/reliability.md).
+  // Beyond 100 x v_max in std the v_max box prior (uniform: v_max^2 / 3)
+  // is used instead, uncorrelated with the position. Real scan spacings stay
+  // far below (S1 at 50 km: ~6 v_max).
+  const T prior_x = v_max_x * v_max_x / T(3);
+  const T prior_y = v_max_y * v_max_y / T(3);
+  if (!(Pv(0, 0) <= T(1e4) * prior_x) || !(Pv(1, 1) <= T(1e4) * prior_y)) {
+    Pv << prior_x, T(0), T(0), prior_y;
+    Pc.setZero();
+  }
   // State order [px, vx, py, vy]: position rows/cols {0, 2}, velocity {1, 3}.
   const int pos[2] = {0, 2};
   const int vel[2] = {1, 3};
