@@ -13,6 +13,15 @@
 
 namespace mfbp_test {
 
+/// SmallBoard's target, measurement and component caps with the paper's
+/// window 7 (SmallBoardCaps itself stops at window 4 to fit 64 KiB).
+struct TestCaps {
+  static constexpr std::size_t kMaxTargets = 16;
+  static constexpr std::size_t kMaxMeasurements = 64;
+  static constexpr std::size_t kMaxClutterComponents = 4;
+  static constexpr std::size_t kMaxWindow = 7;
+};
+
 /// 64-bit LCG (Knuth MMIX constants), uniform in (0, 1) from the top 53 bits.
 struct Lcg {
   std::uint64_t s = 0x853c49e6748fea9bULL;

@@ -15,16 +15,7 @@
 
 using namespace mptrack;
 
-namespace {
-/// SmallBoard's target, measurement and component caps with the paper's
-/// window 7 (SmallBoardCaps itself stops at window 4 to fit 64 KiB).
-struct TestCaps {
-  static constexpr std::size_t kMaxTargets = 16;
-  static constexpr std::size_t kMaxMeasurements = 64;
-  static constexpr std::size_t kMaxClutterComponents = 4;
-  static constexpr std::size_t kMaxWindow = 7;
-};
-}  // namespace
+using mfbp_test::TestCaps;
 
 namespace {
 
