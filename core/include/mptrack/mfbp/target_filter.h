@@ -71,8 +71,18 @@ bool make_spd(Eigen::Matrix<T, N, N>& P) {
   }
   bool repaired = false;
   Eigen::Matrix<T, N, N> L;
+  // A pivot below 1e-4 of its diagonal (a multiple correlation above
+  // 0.99995) counts as singular too: such a float covariance passes this
+  // Cholesky but not Eigen's LLT after the next rounding (fuzz finding F14,
+  // docs/reliability.md). Real track covariances stay far from it.
+  const auto well_conditioned = [&L, &P]() {
+    for (int j = 0; j < N; ++j) {
+      if (!(L(j, j) * L(j, j) >= T(1e-4) * P(j, j))) return false;
+    }
+    return true;
+  };
   for (int attempt = 0; attempt < 8; ++attempt) {
-    if (cholesky<T, N>(P, L)) return repaired;
+    if (cholesky<T, N>(P, L) && well_conditioned()) return repaired;
     repaired = true;
     T scale = T(0);
     for (int r = 0; r < N; ++r) scale = P(r, r) > scale ? P(r, r) : scale;
