@@ -94,6 +94,9 @@ inline constexpr T kEulerGamma = detail::pick<T>(0x1.2788d0p-1f, 0x1.2788cfc6fb6
 /// 0.5 ln(2 pi), the constant of Stirling's formula
 template <class T>
 inline constexpr T kHalfLnTwoPi = detail::pick<T>(0x1.d67f1cp-1f, 0x1.d67f1c864beb5p-1);
+/// ln(2 pi), the normalising constant of a bivariate Gaussian density
+template <class T>
+inline constexpr T kLnTwoPi = detail::pick<T>(0x1.d67f1cp+0f, 0x1.d67f1c864beb5p+0);
 
 namespace detail {
 
