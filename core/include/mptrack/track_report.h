@@ -66,6 +66,7 @@ struct TrackerCounters {
   std::uint64_t tracks_confirmed = 0;
   std::uint64_t tracks_deleted = 0;
   std::uint64_t track_cap_hits = 0;           ///< births refused because kMaxTargets tracks were alive
+  std::uint64_t association_cap_hits = 0;     ///< gated (track, measurement) pairs dropped by an association cap
   std::uint64_t clutter_born = 0;
   std::uint64_t clutter_deleted = 0;
   std::uint64_t clutter_cap_hits = 0;
