@@ -1,10 +1,11 @@
 // `mptrack-sim compare`: every selected tracker on identical measurement
-// sets, side by side (issue "Baselines with amplitude information", seed 001).
+// sets, side by side (seed 001 baselines).
 //
-// Per run r the scans are generated ONCE (stream derive_seed(seed, r, k)) and
-// the same SimScan objects are fed to every tracker, so the trackers cannot
-// see different data; a 64-bit checksum of every measurement handed to each
-// tracker is kept per tracker to prove it (all rows must carry the same one).
+// The run loop (run/run_loop.h) with several trackers: per run r the scans
+// are generated ONCE (stream derive_seed(seed, r, k)) and the same SimScan
+// objects are fed to every tracker, so the trackers cannot see different
+// data; a 64-bit checksum of every measurement handed to each tracker is kept
+// per tracker to prove it (all rows must carry the same one).
 //
 // Metrics per evaluation scan, averaged over runs x evaluation scans:
 // OSPA, GOSPA and its three components (localisation / missed / false, in
@@ -21,7 +22,7 @@
 
 #include "mptrack/scenario/generator.h"
 #include "mptrack/scenario/scenario_spec.h"
-#include "runner.h"
+#include "eval/aggregator.h"
 
 namespace mptrack::sim {
 
@@ -84,15 +85,16 @@ std::vector<std::string> default_compare_trackers(const scenario::ScenarioSpec& 
 /// "a,b,c" -> {a, b, c}; empty items are errors (throws std::runtime_error).
 std::vector<std::string> parse_tracker_list(const std::string& text);
 
-/// FNV-1a over the bit patterns of (range, azimuth, amplitude) of every
-/// measurement of `scan`, chained from `h`.
-std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t h);
-inline constexpr std::uint64_t kChecksumSeed = 0xcbf29ce484222325ULL;
-
 /// Runs the comparison; writes DIR/compare.md, DIR/compare.json and
 /// DIR/ospa.svg when out_dir is set. Throws std::runtime_error on a bad
 /// configuration (unknown tracker, invalid scenario).
 CompareResult run_compare(const CompareConfig& config);
+
+/// One table row from a tracker's summary.
+CompareRow compare_row(const Summary& s);
+
+/// DIR/compare.md, DIR/compare.json and (cfg.plot) DIR/ospa.svg.
+void write_compare_outputs(const CompareResult& result, const CompareConfig& config);
 
 nlohmann::ordered_json compare_to_json(const CompareResult& r);
 std::string compare_to_markdown(const CompareResult& r);

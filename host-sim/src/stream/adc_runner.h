@@ -1,10 +1,7 @@
-// End-to-end raw-ADC Monte Carlo: synthesizer -> ring buffer -> front end
-// -> tracker -> OSPA (seed 004 spec 5: c = 10 m, p = 2), per run:
-//   1. synthesise the run's frames (host side, before the clock starts);
-//   2. stream them through the SPSC ring (stream_pipeline.h) at rate_hz;
-//   3. the consumer runs FrontEnd::process (range, Doppler, angle, CFAR
-//      stages timed) and the tracker's step(), and records frontend.csv;
-//   4. evaluate every frame against the synthesizer's truth.
+// End-to-end raw-ADC Monte Carlo: the run loop (run/run_loop.h) on an
+// AdcScanSource (synthesizer -> ring buffer -> front end, adc_source.h), the
+// tracker, then OSPA against the synthesizer's truth (seed 004: c = 10 m,
+// p = 2) on every frame.
 // Outputs in DIR: summary.json (harness fields plus stage_latency_us, ring,
 // frontend, ospa_by_phase, track_start_delay_frames), truth.csv,
 // measurements.csv, tracks.csv, metrics.csv, frontend.csv, plot.svg.
@@ -18,7 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mptrack/adc/adc_scenario.h"
-#include "runner.h"
+#include "eval/aggregator.h"
 #include "stream/stream_pipeline.h"
 
 namespace mptrack::sim {
