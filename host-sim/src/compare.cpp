@@ -63,27 +63,6 @@ std::vector<std::string> parse_tracker_list(const std::string& text) {
   return out;
 }
 
-CompareRow compare_row(const Summary& s) {
-  CompareRow r;
-  r.tracker = s.tracker;
-  r.mean_ospa = s.mean_ospa;
-  r.mean_gospa = s.mean_gospa;
-  r.gospa_localisation = s.gospa_localisation;
-  r.gospa_missed = s.gospa_missed;
-  r.gospa_false = s.gospa_false;
-  r.missed_per_scan = s.missed_per_scan;
-  r.false_per_scan = s.false_per_scan;
-  r.cardinality_error = s.cardinality_error;
-  r.nft = s.nft;
-  r.mean_confirmed = s.mean_confirmed_tracks;
-  r.latency = s.latency;
-  r.step_errors = s.step_errors;
-  r.steps_not_ok = s.steps_not_ok();
-  r.measurement_checksum = s.measurement_checksum;
-  r.ospa_per_scan = s.ospa_per_scan;
-  return r;
-}
-
 CompareResult run_compare(const CompareConfig& cfg) {
   MeasurementSource source(cfg.spec, cfg.seed, cfg.clutter_scale);
   const scenario::ScenarioSpec& spec = source.spec();
@@ -113,7 +92,7 @@ CompareResult run_compare(const CompareConfig& cfg) {
   // Measurements and truths are the same for every tracker (same scans).
   res.mean_measurements = summaries.front().mean_measurements;
   res.mean_truths = summaries.front().mean_truths;
-  for (const Summary& s : summaries) res.rows.push_back(compare_row(s));
+  res.rows = summaries;
   if (!cfg.out_dir.empty()) write_compare_outputs(res, cfg);
   return res;
 }
@@ -147,7 +126,7 @@ nlohmann::ordered_json compare_to_json(const CompareResult& r) {
                     {"false_per_scan", x.false_per_scan},
                     {"cardinality_error", x.cardinality_error},
                     {"nft", x.nft},
-                    {"mean_confirmed", x.mean_confirmed},
+                    {"mean_confirmed", x.mean_confirmed_tracks},
                     {"latency_us",
                      {{"p50", x.latency.p50_us},
                       {"p99", x.latency.p99_us},
@@ -155,7 +134,7 @@ nlohmann::ordered_json compare_to_json(const CompareResult& r) {
                       {"mean", x.latency.mean_us},
                       {"samples", x.latency.count}}},
                     {"step_errors", x.step_errors},
-                    {"steps_not_ok", x.steps_not_ok},
+                    {"steps_not_ok", x.steps_not_ok()},
                     {"measurement_checksum", hex64(x.measurement_checksum)},
                     {"ospa_per_scan", x.ospa_per_scan}});
   }

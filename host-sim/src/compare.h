@@ -40,25 +40,10 @@ struct CompareConfig {
   bool progress = true;
 };
 
-/// One tracker's row of the table.
-struct CompareRow {
-  std::string tracker;
-  double mean_ospa = 0.0;             ///< [m]
-  double mean_gospa = 0.0;            ///< [m]
-  double gospa_localisation = 0.0;    ///< mean per scan [m^p]
-  double gospa_missed = 0.0;          ///< mean per scan [m^p] = c^p/2 x missed
-  double gospa_false = 0.0;           ///< mean per scan [m^p] = c^p/2 x false
-  double missed_per_scan = 0.0;       ///< GOSPA unassigned truths per scan
-  double false_per_scan = 0.0;        ///< GOSPA unassigned estimates per scan
-  double cardinality_error = 0.0;     ///< mean |#confirmed - #truths| per scan
-  double nft = 0.0;                   ///< confirmed tracks without a truth within c, per scan
-  double mean_confirmed = 0.0;        ///< confirmed tracks per scan
-  LatencyStats latency;               ///< step() wall time [us]
-  std::uint64_t step_errors = 0;      ///< steps returning anything but kOk/kPartial/kCapacityExceeded
-  std::uint64_t steps_not_ok = 0;     ///< steps returning anything but kOk
-  std::uint64_t measurement_checksum = 0;  ///< of every measurement this tracker was given
-  std::vector<double> ospa_per_scan;  ///< mean over runs, index scan-1 [m]
-};
+/// One tracker's row of the table: its aggregator summary (the columns are
+/// the means per evaluation scan, latency, step_errors, steps_not_ok(),
+/// measurement_checksum and ospa_per_scan).
+using CompareRow = Summary;
 
 struct CompareResult {
   std::string scenario;
@@ -89,9 +74,6 @@ std::vector<std::string> parse_tracker_list(const std::string& text);
 /// DIR/ospa.svg when out_dir is set. Throws std::runtime_error on a bad
 /// configuration (unknown tracker, invalid scenario).
 CompareResult run_compare(const CompareConfig& config);
-
-/// One table row from a tracker's summary.
-CompareRow compare_row(const Summary& s);
 
 /// DIR/compare.md, DIR/compare.json and (cfg.plot) DIR/ospa.svg.
 void write_compare_outputs(const CompareResult& result, const CompareConfig& config);

@@ -3,26 +3,15 @@
 // (run/run_loop.h) on a MeasurementSource, writing the output directory.
 #pragma once
 
-#include <cstdint>
-#include <string>
-#include <vector>
-
 #include "eval/aggregator.h"
 #include "mptrack/scenario/scenario_spec.h"
+#include "run/run_loop.h"
 
 namespace mptrack::sim {
 
-struct RunConfig {
+struct RunConfig : TrackerRunOptions {
   scenario::ScenarioSpec spec;
-  std::string tracker = "mfbp";
-  std::uint32_t runs = 1;
-  std::uint64_t seed = 1;
   double clutter_scale = 1.0;   ///< multiplies every clutter mean count
-  std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
-  std::string out_dir;          ///< "" = write nothing
-  std::int64_t csv_runs = -1;   ///< runs written to the CSVs (-1 = all)
-  bool plot = true;             ///< write plot.svg (run 0)
-  bool progress = true;         ///< progress bar on stderr
 };
 
 /// Runs everything; writes DIR/{summary.json,truth.csv,measurements.csv,

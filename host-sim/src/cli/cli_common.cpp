@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
+#include <type_traits>
 
 #include "cli/commands.h"
 
@@ -35,20 +36,18 @@ void truncate_scans(scenario::ScenarioSpec& s, std::uint32_t scans) {
   s.num_scans = scans;
   s.eval_last_scan = std::min(s.eval_last_scan, scans);
   if (s.eval_first_scan > scans) s.eval_first_scan = 1;
-  std::vector<scenario::TargetSpec> targets;
-  for (auto t : s.targets) {
-    if (t.birth_scan > scans) continue;
-    t.death_scan = std::min(t.death_scan, scans);
-    targets.push_back(t);
-  }
-  s.targets = targets;
-  std::vector<scenario::ClutterSpec> clutter;
-  for (auto c : s.clutter) {
-    if (c.birth_scan > scans) continue;
-    c.death_scan = std::min(c.death_scan, scans);
-    clutter.push_back(c);
-  }
-  s.clutter = clutter;
+  const auto clip = [&](auto& v) {
+    using T = typename std::decay_t<decltype(v)>::value_type;
+    std::vector<T> keep;
+    for (T x : v) {
+      if (x.birth_scan > scans) continue;
+      x.death_scan = std::min(x.death_scan, scans);
+      keep.push_back(x);
+    }
+    v = keep;
+  };
+  clip(s.targets);
+  clip(s.clutter);
 }
 
 }  // namespace mptrack::sim

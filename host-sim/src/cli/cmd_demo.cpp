@@ -13,8 +13,7 @@ namespace mptrack::sim {
 namespace {
 
 int run_adc_demo(const RunOptions& o) {
-  AdcCommandArgs a;
-  a.scenario_name = "seed004-drones";
+  AdcRunConfig a;
   a.tracker = o.tracker;
   a.rate_hz = 10.0;
   a.out_dir = "out/demo";
@@ -23,7 +22,7 @@ int run_adc_demo(const RunOptions& o) {
               "through the ring buffer), front end + %s\n"
               "  (the seed 000 measurement-level demo: mptrack-sim demo --measurement-level)\n",
               o.tracker.c_str());
-  return run_adc_command(a);
+  return run_adc_command("seed004-drones", "", a);
 }
 
 int run_measurement_demo(const RunOptions& o) {

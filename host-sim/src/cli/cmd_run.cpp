@@ -7,7 +7,6 @@
 #include "mptrack/adc/adc_json.h"
 #include "runner.h"
 #include "scenario_json.h"
-#include "stream/adc_runner.h"
 #include "tracker_registry.h"
 
 namespace mptrack::sim {
@@ -34,21 +33,24 @@ void apply_target_overrides(const RunOptions& o, scenario::ScenarioSpec& spec) {
   }
 }
 
+/// The options both paths share.
+void fill_common(const RunOptions& o, TrackerRunOptions& t) {
+  t.tracker = o.tracker;
+  t.runs = o.runs;
+  t.seed = o.seed;
+  t.mfbp_params = o.mfbp_params;
+  t.out_dir = o.out_dir;
+  t.csv_runs = o.csv_runs;
+  t.plot = !o.no_plot;
+  t.progress = !o.no_progress;
+}
+
 int run_adc_scenario(const RunOptions& o) {
-  AdcCommandArgs a;
-  a.scenario_name = o.scenario_file.empty() ? o.scenario_name : "";
-  a.scenario_file = o.scenario_file;
-  a.tracker = o.tracker;
-  a.runs = o.runs;
-  a.seed = o.seed;
-  a.frames = o.frames;
-  a.rate_hz = o.rate_hz;
-  a.out_dir = o.out_dir;
-  a.csv_runs = o.csv_runs;
-  a.plot = !o.no_plot;
-  a.progress = !o.no_progress;
-  a.mfbp_params = o.mfbp_params;
-  return run_adc_command(a);
+  AdcRunConfig cfg;
+  fill_common(o, cfg);
+  cfg.frames = o.frames;
+  cfg.rate_hz = o.rate_hz;
+  return run_adc_command(o.scenario_file.empty() ? o.scenario_name : "", o.scenario_file, cfg);
 }
 
 }  // namespace
@@ -84,41 +86,25 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 int run_default_command(const RunOptions& o) {
   if (is_adc_scenario(o.scenario_name, o.scenario_file)) return run_adc_scenario(o);
   RunConfig cfg;
+  fill_common(o, cfg);
   cfg.spec = o.scenario_file.empty() ? resolve_scenario(o.scenario_name) : load_scenario_file(o.scenario_file);
   apply_target_overrides(o, cfg.spec);
   truncate_scans(cfg.spec, o.scans);
-  cfg.tracker = o.tracker;
-  cfg.runs = o.runs;
-  cfg.seed = o.seed;
   cfg.clutter_scale = o.clutter_scale;
-  cfg.mfbp_params = o.mfbp_params;
-  cfg.csv_runs = o.csv_runs;
-  cfg.out_dir = o.out_dir.empty() ? "out/" + cfg.spec.name + "-" + o.tracker : o.out_dir;
-  cfg.plot = !o.no_plot;
-  cfg.progress = !o.no_progress;
+  if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.spec.name + "-" + o.tracker;
   const Summary s = run_monte_carlo(cfg);
   print_run_summary(s, cfg.out_dir);
   return 0;
 }
 
-int run_adc_command(const AdcCommandArgs& a) {
-  AdcRunConfig cfg;
-  if (!a.scenario_file.empty()) {
-    cfg.scenario = adc::load_adc_scenario_file(a.scenario_file);
-  } else if (!adc::builtin_adc_scenario(a.scenario_name, cfg.scenario)) {
-    std::fprintf(stderr, "error: unknown raw-ADC scenario '%s'\n", a.scenario_name.c_str());
+int run_adc_command(const std::string& name, const std::string& file, AdcRunConfig cfg) {
+  if (!file.empty()) {
+    cfg.scenario = adc::load_adc_scenario_file(file);
+  } else if (!adc::builtin_adc_scenario(name, cfg.scenario)) {
+    std::fprintf(stderr, "error: unknown raw-ADC scenario '%s'\n", name.c_str());
     return 2;
   }
-  cfg.tracker = a.tracker;
-  cfg.runs = a.runs;
-  cfg.seed = a.seed;
-  cfg.frames = a.frames;
-  cfg.rate_hz = a.rate_hz;
-  cfg.csv_runs = a.csv_runs;
-  cfg.plot = a.plot;
-  cfg.progress = a.progress;
-  cfg.mfbp_params = a.mfbp_params;
-  cfg.out_dir = a.out_dir.empty() ? "out/" + cfg.scenario.name + "-" + a.tracker : a.out_dir;
+  if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.scenario.name + "-" + cfg.tracker;
   const AdcSummary s = run_adc_monte_carlo(cfg);
   print_adc_summary(s, cfg.out_dir);
   return 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mptrack/scenario/scenario_spec.h"
+#include "stream/adc_runner.h"
 
 namespace mptrack::sim {
 
@@ -47,22 +48,10 @@ struct Subcommand {
 void add_run_options(CLI::App& app, RunOptions& options);
 int run_default_command(const RunOptions& options);
 
-/// Raw-ADC Monte Carlo of one scenario and tracker, report on stdout.
-struct AdcCommandArgs {
-  std::string scenario_name;     ///< built-in name ("" if a file is given)
-  std::string scenario_file;     ///< JSON file ("" = built-in)
-  std::string tracker = "mfbp";
-  std::uint32_t runs = 1;
-  std::uint64_t seed = 1;
-  std::uint32_t frames = 0;      ///< 0 = all
-  double rate_hz = 0.0;          ///< 0 = lossless, as fast as consumed
-  std::string out_dir;           ///< "" = out/<scenario>-<tracker>
-  std::int64_t csv_runs = -1;
-  bool plot = true;
-  bool progress = true;
-  std::vector<std::string> mfbp_params;  ///< --mfbp-param overrides
-};
-int run_adc_command(const AdcCommandArgs& args);
+/// Raw-ADC Monte Carlo of the built-in scenario `name` or the file `file`
+/// ("" = use the name) with `config` (its scenario is replaced), report on
+/// stdout; out_dir "" = out/<scenario>-<tracker>. Returns the exit code.
+int run_adc_command(const std::string& name, const std::string& file, AdcRunConfig config);
 
 /// The report of a measurement-level run on stdout.
 void print_run_summary(const Summary& s, const std::string& out_dir);

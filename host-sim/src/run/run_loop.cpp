@@ -43,6 +43,17 @@ std::vector<EstimateOut> estimates_by_scan(std::vector<EstimateOut>& finals,
   return by_scan;
 }
 
+LoopConfig one_tracker_loop(const TrackerRunOptions& o, const std::string& scenario_name) {
+  LoopConfig loop;
+  loop.trackers = {o.tracker};
+  loop.runs = o.runs;
+  loop.seed = o.seed;
+  loop.mfbp_params = o.mfbp_params;
+  loop.progress_label = scenario_name + " " + o.tracker;
+  loop.progress = o.progress;
+  return loop;
+}
+
 void check_loop_config(const LoopConfig& cfg) {
   if (cfg.runs < 1) throw std::runtime_error("--runs must be >= 1");
   if (cfg.trackers.empty()) throw std::runtime_error("no tracker to compare");

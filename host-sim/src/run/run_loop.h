@@ -37,6 +37,22 @@ struct LoopConfig {
   bool progress = true;                  ///< progress bar on stderr
 };
 
+/// What every one-tracker Monte Carlo command takes (measurement level,
+/// raw ADC).
+struct TrackerRunOptions {
+  std::string tracker = "mfbp";
+  std::uint32_t runs = 1;
+  std::uint64_t seed = 1;
+  std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
+  std::string out_dir;                   ///< "" = write nothing
+  std::int64_t csv_runs = -1;            ///< runs written to the CSVs (-1 = all)
+  bool plot = true;                      ///< write plot.svg (run 0)
+  bool progress = true;                  ///< progress bar on stderr
+};
+
+/// The loop of one tracker from those options (progress "<scenario> <tracker>").
+LoopConfig one_tracker_loop(const TrackerRunOptions& options, const std::string& scenario_name);
+
 /// Sees every (tracker, run) after it was evaluated: CSV writers, the plot,
 /// source-specific statistics.
 class RunObserver {

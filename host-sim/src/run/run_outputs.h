@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,24 @@ class FirstRunKeeper final : public RunObserver {
               const std::vector<ScanMetrics>& metrics) override;
   std::vector<scenario::SimScan> scans;
   std::vector<EstimateOut> estimates;
+};
+
+/// The output directory of a one-tracker run: the CSV writers (when
+/// out_dir is set) and run 0 for plot.svg.
+class RunOutputs {
+ public:
+  /// Creates the directory and the CSV headers when options.out_dir is set.
+  RunOutputs(const TrackerRunOptions& options, const scenario::ScenarioSpec& spec);
+  /// The observers to give run_loop().
+  std::vector<RunObserver*> observers();
+  /// DIR/plot.svg of run 0 when out_dir is set and plot is on.
+  void write_plot(const std::vector<double>& ospa_per_scan, const std::string& title) const;
+
+ private:
+  const TrackerRunOptions& options_;
+  const scenario::ScenarioSpec& spec_;
+  std::unique_ptr<CsvObserver> csv_;
+  FirstRunKeeper first_;
 };
 
 }  // namespace mptrack::sim

@@ -187,28 +187,16 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
   const std::string err = adc::validate(sc);
   if (!err.empty()) throw std::runtime_error("scenario " + sc.name + ": " + err);
   if (!(cfg.rate_hz >= 0.0)) throw std::runtime_error("--rate must be >= 0");
-  LoopConfig loop;
-  loop.trackers = {cfg.tracker};
+  LoopConfig loop = one_tracker_loop(cfg, sc.name);
   loop.factory = &make_adc_tracker;
-  loop.runs = cfg.runs;
-  loop.seed = cfg.seed;
-  loop.mfbp_params = cfg.mfbp_params;
   loop.ospa_cutoff_m = sc.ospa_cutoff_m;
-  loop.progress_label = sc.name + " " + cfg.tracker;
-  loop.progress = cfg.progress;
   check_loop_config(loop);  // before the output directory is created
 
   AdcScanSource source(sc, cfg.seed, cfg.rate_hz, cfg.consumer_delay_us);
-  std::vector<RunObserver*> observers;
-  std::unique_ptr<CsvObserver> csv;
-  if (!cfg.out_dir.empty()) {
-    csv = std::make_unique<CsvObserver>(cfg.out_dir, source.spec(), cfg.csv_runs);
-    observers.push_back(csv.get());
-  }
+  RunOutputs outputs(cfg, source.spec());
   AdcRunObserver adc_stats(source, cfg.runs, cfg.out_dir, cfg.csv_runs);
-  FirstRunKeeper first;
+  std::vector<RunObserver*> observers = outputs.observers();
   observers.push_back(&adc_stats);
-  observers.push_back(&first);
 
   AdcSummary out;
   out.base = run_loop(source, loop, observers).front();
@@ -219,14 +207,11 @@ AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
     std::ofstream f(cfg.out_dir + "/summary.json");
     if (!f) throw std::runtime_error(cfg.out_dir + "/summary.json: cannot write");
     f << adc_summary_to_json(out).dump(2) << "\n";
-    if (cfg.plot) {
-      char title[200];
-      std::snprintf(title, sizeof title, "%s / %s, raw ADC (run 0; OSPA c = %g m, mean of %u runs)", sc.name.c_str(),
-                    cfg.tracker.c_str(), sc.ospa_cutoff_m, cfg.runs);
-      write_plot_svg(cfg.out_dir + "/plot.svg", source.spec(), first.scans, first.estimates,
-                     out.base.ospa_per_scan, title);
-    }
   }
+  char title[200];
+  std::snprintf(title, sizeof title, "%s / %s, raw ADC (run 0; OSPA c = %g m, mean of %u runs)", sc.name.c_str(),
+                cfg.tracker.c_str(), sc.ospa_cutoff_m, cfg.runs);
+  outputs.write_plot(out.base.ospa_per_scan, title);
   source.print_stage_profile();
   return out;
 }

@@ -16,23 +16,16 @@
 
 #include "mptrack/adc/adc_scenario.h"
 #include "eval/aggregator.h"
+#include "run/run_loop.h"
 #include "stream/stream_pipeline.h"
 
 namespace mptrack::sim {
 
-struct AdcRunConfig {
+struct AdcRunConfig : TrackerRunOptions {
   adc::AdcScenario scenario;
-  std::string tracker = "mfbp";
-  std::uint32_t runs = 1;
-  std::uint64_t seed = 1;
   std::uint32_t frames = 0;        ///< keep only the first N frames (0 = all)
   double rate_hz = 0.0;            ///< producer frame rate [Hz]; 0 = lossless, as fast as consumed
-  std::string out_dir;             ///< "" = write nothing
-  std::int64_t csv_runs = -1;      ///< runs written to the CSVs (-1 = all)
-  bool plot = true;
-  bool progress = true;
   std::uint32_t consumer_delay_us = 0;  ///< extra sleep per consumed frame (tests: a slow consumer)
-  std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
 };
 
 /// Per-stage latency over all processed frames of all runs [us].
