@@ -66,33 +66,27 @@ std::vector<std::string> parse_tracker_list(const std::string& text) {
 CompareResult run_compare(const CompareConfig& cfg) {
   MeasurementSource source(cfg.spec, cfg.seed, cfg.clutter_scale);
   const scenario::ScenarioSpec& spec = source.spec();
-  CompareResult res;
-  res.scenario = spec.name;
-  res.runs = cfg.runs;
-  res.scans = spec.num_scans;
-  res.seed = cfg.seed;
-  res.clutter_scale = cfg.clutter_scale;
-  default_ospa(spec, res.ospa_cutoff_m, res.ospa_order);
-  if (cfg.ospa_cutoff_m > 0.0) res.ospa_cutoff_m = cfg.ospa_cutoff_m;
-  if (cfg.ospa_order > 0.0) res.ospa_order = cfg.ospa_order;
-  res.eval_first_scan = spec.eval_first_scan;
-  res.eval_last_scan = spec.eval_last_scan;
-
   LoopConfig loop;
   loop.trackers = cfg.trackers.empty() ? default_compare_trackers(spec) : cfg.trackers;
   loop.runs = cfg.runs;
   loop.seed = cfg.seed;
   loop.clutter_scale = cfg.clutter_scale;
   loop.mfbp_params = cfg.mfbp_params;
-  loop.ospa_cutoff_m = res.ospa_cutoff_m;
-  loop.ospa_order = res.ospa_order;
+  default_ospa(spec, loop.ospa_cutoff_m, loop.ospa_order);
+  if (cfg.ospa_cutoff_m > 0.0) loop.ospa_cutoff_m = cfg.ospa_cutoff_m;
+  if (cfg.ospa_order > 0.0) loop.ospa_order = cfg.ospa_order;
   loop.progress_label = "compare " + spec.name;
   loop.progress = cfg.progress;
-  const std::vector<Summary> summaries = run_loop(source, loop, {});
+
+  CompareResult res;
+  res.rows = run_loop(source, loop, {});
+  static_cast<SummaryHeader&>(res) = res.rows.front();
+  res.tracker.clear();
+  res.ospa_cutoff_m = loop.ospa_cutoff_m;
+  res.ospa_order = loop.ospa_order;
   // Measurements and truths are the same for every tracker (same scans).
-  res.mean_measurements = summaries.front().mean_measurements;
-  res.mean_truths = summaries.front().mean_truths;
-  res.rows = summaries;
+  res.mean_measurements = res.rows.front().mean_measurements;
+  res.mean_truths = res.rows.front().mean_truths;
   if (!cfg.out_dir.empty()) write_compare_outputs(res, cfg);
   return res;
 }

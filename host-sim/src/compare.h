@@ -45,13 +45,10 @@ struct CompareConfig {
 /// measurement_checksum and ospa_per_scan).
 using CompareRow = Summary;
 
-struct CompareResult {
-  std::string scenario;
-  std::uint32_t runs = 0, scans = 0;
-  std::uint64_t seed = 0;
-  double clutter_scale = 1.0;
+/// The table: what was run (SummaryHeader; `tracker` is empty, one per row)
+/// and one row per tracker.
+struct CompareResult : SummaryHeader {
   double ospa_cutoff_m = 0.0, ospa_order = 0.0;
-  std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
   double mean_measurements = 0.0;     ///< per scan
   double mean_truths = 0.0;           ///< per evaluation scan
   std::vector<CompareRow> rows;       ///< in tracker order

@@ -1,8 +1,6 @@
 // Helpers shared by several subcommands; see commands.h.
-#include <algorithm>
 #include <exception>
 #include <stdexcept>
-#include <type_traits>
 
 #include "cli/commands.h"
 
@@ -29,25 +27,6 @@ double parse_ratio(const std::string& text, const char* flag) {
   } catch (const std::exception&) {
   }
   throw std::runtime_error(std::string(flag) + ": expected a number or a ratio like 10/3, got '" + text + "'");
-}
-
-void truncate_scans(scenario::ScenarioSpec& s, std::uint32_t scans) {
-  if (scans == 0 || scans >= s.num_scans) return;
-  s.num_scans = scans;
-  s.eval_last_scan = std::min(s.eval_last_scan, scans);
-  if (s.eval_first_scan > scans) s.eval_first_scan = 1;
-  const auto clip = [&](auto& v) {
-    using T = typename std::decay_t<decltype(v)>::value_type;
-    std::vector<T> keep;
-    for (T x : v) {
-      if (x.birth_scan > scans) continue;
-      x.death_scan = std::min(x.death_scan, scans);
-      keep.push_back(x);
-    }
-    v = keep;
-  };
-  clip(s.targets);
-  clip(s.clutter);
 }
 
 }  // namespace mptrack::sim

@@ -12,31 +12,20 @@ namespace mptrack::sim {
 
 namespace {
 
+/// The options: text that needs resolving, the rest bound into `config`.
 struct CompareArgs {
   std::string scenario = "seed000-s2";
   std::string trackers;
-  std::uint32_t runs = 10;
-  std::uint64_t seed = 1;
-  std::string out_dir;
   std::uint32_t scans = 0;
-  double clutter_scale = 1.0;
-  double ospa_c = 0.0;
-  double ospa_p = 0.0;
-  std::vector<std::string> mfbp_params;
+  CompareConfig config;
 };
 
 int run_compare_command(const CompareArgs& a, const RunOptions& o) {
-  CompareConfig cc;
+  CompareConfig cc = a.config;
   cc.spec = resolve_scenario(a.scenario);
   truncate_scans(cc.spec, a.scans);
   if (!a.trackers.empty()) cc.trackers = parse_tracker_list(a.trackers);
-  cc.runs = a.runs;
-  cc.seed = a.seed;
-  cc.clutter_scale = a.clutter_scale;
-  cc.mfbp_params = a.mfbp_params;
-  cc.ospa_cutoff_m = a.ospa_c;
-  cc.ospa_order = a.ospa_p;
-  cc.out_dir = a.out_dir.empty() ? "out/compare-" + cc.spec.name : a.out_dir;
+  if (cc.out_dir.empty()) cc.out_dir = "out/compare-" + cc.spec.name;
   cc.plot = !o.no_plot;
   cc.progress = !o.no_progress;
   const CompareResult r = run_compare(cc);
@@ -46,24 +35,25 @@ int run_compare_command(const CompareArgs& a, const RunOptions& o) {
 }
 
 void add_options(CLI::App& cmd, CompareArgs& a) {
+  a.config.runs = 10;
   cmd.add_option("--scenario", a.scenario, "built-in name (seed000-s1..s3, seed001-s1..s5) or a scenario JSON file")
       ->capture_default_str();
   cmd.add_option("--trackers", a.trackers,
                  "comma-separated tracker names (see `mptrack-sim --help`). Default: polar scenarios "
                  "mfbp,mfbp-filter,gmphd,gmcphd,cbmember,gmcphd-known,gnn; Cartesian (seed001) "
                  "gmphd,gmphd-known,gmcphd,gmcphd-known,cbmember,cbmember-known");
-  cmd.add_option("--runs", a.runs, "Monte Carlo runs (each tracker sees the same runs)")
+  cmd.add_option("--runs", a.config.runs, "Monte Carlo runs (each tracker sees the same runs)")
       ->capture_default_str()->check(CLI::PositiveNumber);
-  cmd.add_option("--seed", a.seed, "random seed (run r, scan k use stream (seed, r, k))")->capture_default_str();
-  cmd.add_option("--out", a.out_dir, "output directory (default out/compare-<scenario>)");
+  cmd.add_option("--seed", a.config.seed, "random seed (run r, scan k use stream (seed, r, k))")->capture_default_str();
+  cmd.add_option("--out", a.config.out_dir, "output directory (default out/compare-<scenario>)");
   cmd.add_option("--scans", a.scans, "use only the first N scans (0 = all)");
-  cmd.add_option("--clutter-scale", a.clutter_scale, "multiply every clutter mean count")
+  cmd.add_option("--clutter-scale", a.config.clutter_scale, "multiply every clutter mean count")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd.add_option("--ospa-c", a.ospa_c, "OSPA/GOSPA cutoff c [m] (default: 300 for seed001, 631 for seed000)")
+  cmd.add_option("--ospa-c", a.config.ospa_cutoff_m, "OSPA/GOSPA cutoff c [m] (default: 300 for seed001, 631 for seed000)")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_option("--ospa-p", a.ospa_p, "OSPA/GOSPA order p (default: 1 for seed001, 2 for seed000)")
+  cmd.add_option("--ospa-p", a.config.ospa_order, "OSPA/GOSPA order p (default: 1 for seed001, 2 for seed000)")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_option("--mfbp-param", a.mfbp_params, kMfbpParamHelp);
+  cmd.add_option("--mfbp-param", a.config.mfbp_params, kMfbpParamHelp);
 }
 
 }  // namespace

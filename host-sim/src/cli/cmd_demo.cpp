@@ -14,14 +14,14 @@ namespace {
 
 int run_adc_demo(const RunOptions& o) {
   AdcRunConfig a;
-  a.tracker = o.tracker;
+  a.tracker = o.run.tracker;
   a.rate_hz = 10.0;
   a.out_dir = "out/demo";
   a.progress = !o.no_progress;
   std::printf("mptrack demo: seed004-drones from raw ADC frames (3x3 MIMO, 10 GHz, 100 frames streamed at 10 Hz "
               "through the ring buffer), front end + %s\n"
               "  (the seed 000 measurement-level demo: mptrack-sim demo --measurement-level)\n",
-              o.tracker.c_str());
+              o.run.tracker.c_str());
   return run_adc_command("seed004-drones", "", a);
 }
 
@@ -29,7 +29,7 @@ int run_measurement_demo(const RunOptions& o) {
   RunConfig cfg;
   scenario::builtin_scenario("seed000-s2", cfg.spec);
   truncate_scans(cfg.spec, 180);
-  cfg.tracker = o.tracker;
+  cfg.tracker = o.run.tracker;
   cfg.out_dir = "out/demo";
   cfg.plot = !o.no_plot;
   cfg.progress = !o.no_progress;

@@ -35,12 +35,7 @@ void apply_target_overrides(const RunOptions& o, scenario::ScenarioSpec& spec) {
 
 /// The options both paths share.
 void fill_common(const RunOptions& o, TrackerRunOptions& t) {
-  t.tracker = o.tracker;
-  t.runs = o.runs;
-  t.seed = o.seed;
-  t.mfbp_params = o.mfbp_params;
-  t.out_dir = o.out_dir;
-  t.csv_runs = o.csv_runs;
+  t = o.run;
   t.plot = !o.no_plot;
   t.progress = !o.no_progress;
 }
@@ -62,10 +57,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->capture_default_str();
   app.add_option("--scenario-file", o.scenario_file, "load a scenario from JSON (schema: host-sim/scenarios/*.json)")
       ->check(CLI::ExistingFile);
-  app.add_option("--tracker", o.tracker, tracker_help)->capture_default_str();
-  app.add_option("--runs", o.runs, "Monte Carlo runs")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--seed", o.seed, "random seed (run r uses stream (seed, r, scan))")->capture_default_str();
-  app.add_option("--out", o.out_dir, "output directory (default out/<scenario>-<tracker>)");
+  app.add_option("--tracker", o.run.tracker, tracker_help)->capture_default_str();
+  app.add_option("--runs", o.run.runs, "Monte Carlo runs")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--seed", o.run.seed, "random seed (run r uses stream (seed, r, scan))")->capture_default_str();
+  app.add_option("--out", o.run.out_dir, "output directory (default out/<scenario>-<tracker>)");
   app.add_option("--swerling", o.swerling, "override the Swerling case of every target and clutter component (1 or 3)")
       ->check(CLI::IsMember({1, 3}));
   app.add_option("--snr1", o.snr1_text, "override target 1's mean SNR, linear (e.g. 10/3)");
@@ -77,8 +72,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--rate", o.rate_hz, "raw-ADC scenarios: producer frame rate [Hz], frames dropped on overrun "
                  "(0 = lossless, as fast as the consumer)")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  app.add_option("--csv-runs", o.csv_runs, "write CSV rows for the first N runs only (-1 = all)")->capture_default_str();
-  app.add_option("--mfbp-param", o.mfbp_params, kMfbpParamHelp);
+  app.add_option("--csv-runs", o.run.csv_runs, "write CSV rows for the first N runs only (-1 = all)")->capture_default_str();
+  app.add_option("--mfbp-param", o.run.mfbp_params, kMfbpParamHelp);
   app.add_flag("--no-plot", o.no_plot, "do not write plot.svg");
   app.add_flag("--no-progress", o.no_progress, "no progress output on stderr");
 }
@@ -91,7 +86,7 @@ int run_default_command(const RunOptions& o) {
   apply_target_overrides(o, cfg.spec);
   truncate_scans(cfg.spec, o.scans);
   cfg.clutter_scale = o.clutter_scale;
-  if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.spec.name + "-" + o.tracker;
+  if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.spec.name + "-" + cfg.tracker;
   const Summary s = run_monte_carlo(cfg);
   print_run_summary(s, cfg.out_dir);
   return 0;

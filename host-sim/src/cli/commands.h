@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "mptrack/scenario/scenario_spec.h"
+#include "run/run_loop.h"
+#include "run/truncate.h"
 #include "stream/adc_runner.h"
 
 namespace mptrack::sim {
@@ -20,20 +22,15 @@ struct Summary;
 
 /// Options of the default command (Monte Carlo runs of one scenario x one tracker).
 struct RunOptions {
+  TrackerRunOptions run;           ///< --tracker, --runs, --seed, --out, --csv-runs, --mfbp-param (plot, progress: below)
   std::string scenario_name = "seed000-s2";
   std::string scenario_file;
-  std::string tracker = "mfbp";
-  std::uint32_t runs = 1;
-  std::uint64_t seed = 1;
-  std::string out_dir;
   int swerling = 0;
   std::string snr1_text, snr2_text;
   double clutter_scale = 1.0;
   std::uint32_t scans = 0;
   std::uint32_t frames = 0;
   double rate_hz = 0.0;
-  std::int64_t csv_runs = -1;
-  std::vector<std::string> mfbp_params;
   bool no_plot = false;
   bool no_progress = false;
 };
@@ -68,7 +65,5 @@ Subcommand add_scenario_export_command(CLI::App& app);
 extern const char* const kMfbpParamHelp;
 /// "10/3", "20" or "3.5" -> double; throws std::runtime_error naming `flag`.
 double parse_ratio(const std::string& text, const char* flag);
-/// Keeps the first `scans` scans (eval interval and lifetimes clipped); 0 = all.
-void truncate_scans(scenario::ScenarioSpec& s, std::uint32_t scans);
 
 }  // namespace mptrack::sim

@@ -80,14 +80,7 @@ void Summary::count_status(Status st) {
 }
 
 Aggregator::Aggregator(const SummaryHeader& h) {
-  sum_.scenario = h.scenario;
-  sum_.tracker = h.tracker;
-  sum_.runs = h.runs;
-  sum_.scans = h.scans;
-  sum_.seed = h.seed;
-  sum_.clutter_scale = h.clutter_scale;
-  sum_.eval_first_scan = h.eval_first_scan;
-  sum_.eval_last_scan = h.eval_last_scan;
+  static_cast<SummaryHeader&>(sum_) = h;
   sum_.ospa_per_scan.assign(h.scans, 0.0);
 }
 

@@ -35,14 +35,16 @@ void add_counters(TrackerCounters& sum, const TrackerCounters& run);
 std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t h);
 inline constexpr std::uint64_t kChecksumSeed = 0xcbf29ce484222325ULL;
 
-struct Summary {
-  std::string scenario;
-  std::string tracker;
-  std::uint32_t runs = 0;
-  std::uint32_t scans = 0;
+/// What a Summary describes; the aggregator fills in the rest.
+struct SummaryHeader {
+  std::string scenario, tracker;
+  std::uint32_t runs = 0, scans = 0;
   std::uint64_t seed = 0;
-  std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
   double clutter_scale = 1.0;
+  std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
+};
+
+struct Summary : SummaryHeader {
   double mean_ospa = 0.0;       ///< over runs x evaluation scans [m]
   double mean_gospa = 0.0;      ///< [m]
   double gospa_localisation = 0.0;  ///< mean per evaluation scan [m^p]
@@ -74,15 +76,6 @@ struct Summary {
   void count_status(Status st);
   /// step()/flush() calls that returned anything but kOk.
   std::uint64_t steps_not_ok() const { return step_errors + steps_partial + steps_capacity; }
-};
-
-/// What a Summary describes; the aggregator fills in the rest.
-struct SummaryHeader {
-  std::string scenario, tracker;
-  std::uint32_t runs = 0, scans = 0;
-  std::uint64_t seed = 0;
-  double clutter_scale = 1.0;
-  std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
 };
 
 class Aggregator {

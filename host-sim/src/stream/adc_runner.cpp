@@ -11,6 +11,7 @@
 #include "mptrack/math/detmath.h"
 #include "run/run_loop.h"
 #include "run/run_outputs.h"
+#include "run/truncate.h"
 #include "stream/adc_source.h"
 #include "stream/adc_trackers.h"
 #include "svg_plot.h"
@@ -35,32 +36,6 @@ nlohmann::ordered_json lat_json(const LatencyStats& s) {
 }
 
 }  // namespace
-
-void truncate_frames(adc::AdcScenario& s, std::uint32_t frames) {
-  if (frames == 0 || frames >= s.num_frames) return;
-  s.num_frames = frames;
-  const auto clip = [&](auto& v) {
-    using T = typename std::decay_t<decltype(v)>::value_type;
-    std::vector<T> keep;
-    for (T x : v) {
-      if (x.birth_frame > frames) continue;
-      x.death_frame = std::min(x.death_frame, frames);
-      keep.push_back(x);
-    }
-    v = keep;
-  };
-  clip(s.drones);
-  clip(s.clutter_patches);
-  clip(s.chaff_clouds);
-  clip(s.jammers);
-  std::vector<adc::EvalPhase> phases;
-  for (adc::EvalPhase p : s.phases) {
-    if (p.first_frame > frames) continue;
-    p.last_frame = std::min(p.last_frame, frames);
-    phases.push_back(p);
-  }
-  s.phases = phases;
-}
 
 namespace {
 

@@ -17,6 +17,7 @@
 #include "mptrack/adc/adc_scenario.h"
 #include "eval/aggregator.h"
 #include "run/run_loop.h"
+#include "run/truncate.h"
 #include "stream/stream_pipeline.h"
 
 namespace mptrack::sim {
@@ -46,9 +47,6 @@ struct AdcSummary {
   std::map<std::uint32_t, double> start_delay;     ///< drone id -> mean frames from birth to a confirmed track within c
   std::vector<double> cardinality_per_frame;       ///< mean confirmed tracks per frame (index frame-1)
 };
-
-/// Clips a scenario to its first `frames` frames (lifetimes and phases too).
-void truncate_frames(adc::AdcScenario& s, std::uint32_t frames);
 
 /// Runs everything (throws std::runtime_error on a bad configuration).
 AdcSummary run_adc_monte_carlo(const AdcRunConfig& config);
