@@ -1,10 +1,11 @@
 // `mptrack-sim compare`: every selected tracker on identical measurement
-// sets, side by side (issue "Baselines with amplitude information", seed 001).
+// sets, side by side (seed 001 baselines).
 //
-// Per run r the scans are generated ONCE (stream derive_seed(seed, r, k)) and
-// the same SimScan objects are fed to every tracker, so the trackers cannot
-// see different data; a 64-bit checksum of every measurement handed to each
-// tracker is kept per tracker to prove it (all rows must carry the same one).
+// The run loop (run/run_loop.h) with several trackers: per run r the scans
+// are generated ONCE (stream derive_seed(seed, r, k)) and the same SimScan
+// objects are fed to every tracker, so the trackers cannot see different
+// data; a 64-bit checksum of every measurement handed to each tracker is kept
+// per tracker to prove it (all rows must carry the same one).
 //
 // Metrics per evaluation scan, averaged over runs x evaluation scans:
 // OSPA, GOSPA and its three components (localisation / missed / false, in
@@ -21,7 +22,7 @@
 
 #include "mptrack/scenario/generator.h"
 #include "mptrack/scenario/scenario_spec.h"
-#include "runner.h"
+#include "eval/aggregator.h"
 
 namespace mptrack::sim {
 
@@ -39,33 +40,15 @@ struct CompareConfig {
   bool progress = true;
 };
 
-/// One tracker's row of the table.
-struct CompareRow {
-  std::string tracker;
-  double mean_ospa = 0.0;             ///< [m]
-  double mean_gospa = 0.0;            ///< [m]
-  double gospa_localisation = 0.0;    ///< mean per scan [m^p]
-  double gospa_missed = 0.0;          ///< mean per scan [m^p] = c^p/2 x missed
-  double gospa_false = 0.0;           ///< mean per scan [m^p] = c^p/2 x false
-  double missed_per_scan = 0.0;       ///< GOSPA unassigned truths per scan
-  double false_per_scan = 0.0;        ///< GOSPA unassigned estimates per scan
-  double cardinality_error = 0.0;     ///< mean |#confirmed - #truths| per scan
-  double nft = 0.0;                   ///< confirmed tracks without a truth within c, per scan
-  double mean_confirmed = 0.0;        ///< confirmed tracks per scan
-  LatencyStats latency;               ///< step() wall time [us]
-  std::uint64_t step_errors = 0;      ///< steps returning anything but kOk/kPartial/kCapacityExceeded
-  std::uint64_t steps_not_ok = 0;     ///< steps returning anything but kOk
-  std::uint64_t measurement_checksum = 0;  ///< of every measurement this tracker was given
-  std::vector<double> ospa_per_scan;  ///< mean over runs, index scan-1 [m]
-};
+/// One tracker's row of the table: its aggregator summary (the columns are
+/// the means per evaluation scan, latency, step_errors, steps_not_ok(),
+/// measurement_checksum and ospa_per_scan).
+using CompareRow = Summary;
 
-struct CompareResult {
-  std::string scenario;
-  std::uint32_t runs = 0, scans = 0;
-  std::uint64_t seed = 0;
-  double clutter_scale = 1.0;
+/// The table: what was run (SummaryHeader; `tracker` is empty, one per row)
+/// and one row per tracker.
+struct CompareResult : SummaryHeader {
   double ospa_cutoff_m = 0.0, ospa_order = 0.0;
-  std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
   double mean_measurements = 0.0;     ///< per scan
   double mean_truths = 0.0;           ///< per evaluation scan
   std::vector<CompareRow> rows;       ///< in tracker order
@@ -84,15 +67,13 @@ std::vector<std::string> default_compare_trackers(const scenario::ScenarioSpec& 
 /// "a,b,c" -> {a, b, c}; empty items are errors (throws std::runtime_error).
 std::vector<std::string> parse_tracker_list(const std::string& text);
 
-/// FNV-1a over the bit patterns of (range, azimuth, amplitude) of every
-/// measurement of `scan`, chained from `h`.
-std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t h);
-inline constexpr std::uint64_t kChecksumSeed = 0xcbf29ce484222325ULL;
-
 /// Runs the comparison; writes DIR/compare.md, DIR/compare.json and
 /// DIR/ospa.svg when out_dir is set. Throws std::runtime_error on a bad
 /// configuration (unknown tracker, invalid scenario).
 CompareResult run_compare(const CompareConfig& config);
+
+/// DIR/compare.md, DIR/compare.json and (cfg.plot) DIR/ospa.svg.
+void write_compare_outputs(const CompareResult& result, const CompareConfig& config);
 
 nlohmann::ordered_json compare_to_json(const CompareResult& r);
 std::string compare_to_markdown(const CompareResult& r);

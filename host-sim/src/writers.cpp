@@ -4,8 +4,6 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "runner.h"
-
 namespace mptrack::sim {
 
 namespace {
@@ -120,7 +118,9 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
                    {"clutter_deleted", c.clutter_deleted},
                    {"clutter_cap_hits", c.clutter_cap_hits},
                    {"bp_not_converged", c.bp_not_converged},
-                   {"numerical_repairs", c.numerical_repairs}};
+                   {"numerical_repairs", c.numerical_repairs},
+                   {"gap_resets", c.gap_resets},
+                   {"measurements_duplicate", c.measurements_duplicate}};
   j["ospa_per_scan"] = s.ospa_per_scan;
   return j;
 }

@@ -8,13 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "metrics.h"
+#include "eval/aggregator.h"
+#include "eval/scan_evaluator.h"
 #include "mptrack/scenario/generator.h"
 #include "tracker_adapter.h"
 
 namespace mptrack::sim {
-
-struct Summary;
 
 inline constexpr const char* kTruthCsvHeader = "run,scan,target_id,x,y,vx,vy,snr,eval";
 inline constexpr const char* kMeasurementsCsvHeader = "run,scan,range,azimuth,amplitude,origin";

@@ -132,7 +132,7 @@ TEST_CASE("compare: OSPA, NFT and GOSPA of a tracker match the single-tracker ru
   CHECK(r.rows[0].mean_ospa == doctest::Approx(s.mean_ospa).epsilon(1e-12));
   CHECK(r.rows[0].mean_gospa == doctest::Approx(s.mean_gospa).epsilon(1e-12));
   CHECK(r.rows[0].nft == doctest::Approx(s.nft));
-  CHECK(r.rows[0].mean_confirmed == doctest::Approx(s.mean_confirmed_tracks));
+  CHECK(r.rows[0].mean_confirmed_tracks == doctest::Approx(s.mean_confirmed_tracks));
   CHECK(r.mean_truths == doctest::Approx(s.mean_truths));
   // Cardinality error by hand: the oracle reports exactly the detected in-region targets.
   CHECK(r.rows[0].cardinality_error == doctest::Approx(s.mean_truths - s.mean_confirmed_tracks));

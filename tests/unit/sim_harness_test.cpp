@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "metrics.h"
+#include "eval/scan_evaluator.h"
 #include "mptrack/scenario/builtin.h"
 #include "runner.h"
 #include "writers.h"

@@ -1,10 +1,7 @@
-// End-to-end raw-ADC Monte Carlo: synthesizer -> ring buffer -> front end
-// -> tracker -> OSPA (seed 004 spec 5: c = 10 m, p = 2), per run:
-//   1. synthesise the run's frames (host side, before the clock starts);
-//   2. stream them through the SPSC ring (stream_pipeline.h) at rate_hz;
-//   3. the consumer runs FrontEnd::process (range, Doppler, angle, CFAR
-//      stages timed) and the tracker's step(), and records frontend.csv;
-//   4. evaluate every frame against the synthesizer's truth.
+// End-to-end raw-ADC Monte Carlo: the run loop (run/run_loop.h) on an
+// AdcScanSource (synthesizer -> ring buffer -> front end, adc_source.h), the
+// tracker, then OSPA against the synthesizer's truth (seed 004: c = 10 m,
+// p = 2) on every frame.
 // Outputs in DIR: summary.json (harness fields plus stage_latency_us, ring,
 // frontend, ospa_by_phase, track_start_delay_frames), truth.csv,
 // measurements.csv, tracks.csv, metrics.csv, frontend.csv, plot.svg.
@@ -18,24 +15,18 @@
 #include <nlohmann/json.hpp>
 
 #include "mptrack/adc/adc_scenario.h"
-#include "runner.h"
+#include "eval/aggregator.h"
+#include "run/run_loop.h"
+#include "run/truncate.h"
 #include "stream/stream_pipeline.h"
 
 namespace mptrack::sim {
 
-struct AdcRunConfig {
+struct AdcRunConfig : TrackerRunOptions {
   adc::AdcScenario scenario;
-  std::string tracker = "mfbp";
-  std::uint32_t runs = 1;
-  std::uint64_t seed = 1;
   std::uint32_t frames = 0;        ///< keep only the first N frames (0 = all)
   double rate_hz = 0.0;            ///< producer frame rate [Hz]; 0 = lossless, as fast as consumed
-  std::string out_dir;             ///< "" = write nothing
-  std::int64_t csv_runs = -1;      ///< runs written to the CSVs (-1 = all)
-  bool plot = true;
-  bool progress = true;
   std::uint32_t consumer_delay_us = 0;  ///< extra sleep per consumed frame (tests: a slow consumer)
-  std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
 };
 
 /// Per-stage latency over all processed frames of all runs [us].
@@ -56,9 +47,6 @@ struct AdcSummary {
   std::map<std::uint32_t, double> start_delay;     ///< drone id -> mean frames from birth to a confirmed track within c
   std::vector<double> cardinality_per_frame;       ///< mean confirmed tracks per frame (index frame-1)
 };
-
-/// Clips a scenario to its first `frames` frames (lifetimes and phases too).
-void truncate_frames(adc::AdcScenario& s, std::uint32_t frames);
 
 /// Runs everything (throws std::runtime_error on a bad configuration).
 AdcSummary run_adc_monte_carlo(const AdcRunConfig& config);

@@ -1,0 +1,32 @@
+// Helpers shared by several subcommands; see commands.h.
+#include <exception>
+#include <stdexcept>
+
+#include "cli/commands.h"
+
+namespace mptrack::sim {
+
+const char* const kMfbpParamHelp =
+    "override an MfbpParams field for the MF-BP trackers, NAME=VALUE (repeatable), e.g. "
+    "process_noise_var=0.3 or unresolved_chi2=0; names in host-sim/README.md";
+
+double parse_ratio(const std::string& text, const char* flag) {
+  const auto slash = text.find('/');
+  try {
+    std::size_t used = 0;
+    if (slash == std::string::npos) {
+      const double v = std::stod(text, &used);
+      if (used == text.size()) return v;
+    } else {
+      const double a = std::stod(text.substr(0, slash), &used);
+      std::size_t used_b = 0;
+      const std::string b_text = text.substr(slash + 1);
+      const double b = std::stod(b_text, &used_b);
+      if (used == slash && used_b == b_text.size() && b != 0.0) return a / b;
+    }
+  } catch (const std::exception&) {
+  }
+  throw std::runtime_error(std::string(flag) + ": expected a number or a ratio like 10/3, got '" + text + "'");
+}
+
+}  // namespace mptrack::sim

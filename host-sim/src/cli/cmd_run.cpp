@@ -1,0 +1,130 @@
+// The default command: Monte Carlo runs of one scenario x one tracker,
+// measurement level (runner.h) or, for a raw-ADC scenario, from raw frames
+// through the front end (stream/adc_runner.h).
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "mptrack/adc/adc_json.h"
+#include "runner.h"
+#include "scenario_json.h"
+#include "tracker_registry.h"
+
+namespace mptrack::sim {
+
+namespace {
+
+/// True for a built-in raw-ADC name or a file with the raw-ADC schema.
+bool is_adc_scenario(const std::string& name, const std::string& file) {
+  if (!file.empty()) return adc::is_adc_scenario_file(file);
+  adc::AdcScenario s;
+  return adc::builtin_adc_scenario(name, s);
+}
+
+void apply_target_overrides(const RunOptions& o, scenario::ScenarioSpec& spec) {
+  using scenario::Swerling;
+  if (o.swerling == 0 && o.snr1_text.empty() && o.snr2_text.empty()) return;
+  for (auto& t : spec.targets) {
+    if (o.swerling != 0) t.swerling = o.swerling == 3 ? Swerling::kThree : Swerling::kOne;
+    if (t.id == 1 && !o.snr1_text.empty()) t.snr = parse_ratio(o.snr1_text, "--snr1");
+    if (t.id == 2 && !o.snr2_text.empty()) t.snr = parse_ratio(o.snr2_text, "--snr2");
+  }
+  for (auto& c : spec.clutter) {
+    if (o.swerling != 0) c.swerling = o.swerling == 3 ? Swerling::kThree : Swerling::kOne;
+  }
+}
+
+/// The options both paths share.
+void fill_common(const RunOptions& o, TrackerRunOptions& t) {
+  t = o.run;
+  t.plot = !o.no_plot;
+  t.progress = !o.no_progress;
+}
+
+int run_adc_scenario(const RunOptions& o) {
+  AdcRunConfig cfg;
+  fill_common(o, cfg);
+  cfg.frames = o.frames;
+  cfg.rate_hz = o.rate_hz;
+  return run_adc_command(o.scenario_file.empty() ? o.scenario_name : "", o.scenario_file, cfg);
+}
+
+}  // namespace
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  std::string tracker_help = "tracker:";
+  for (const auto& t : tracker_list()) tracker_help += "\n  " + t.name + ": " + t.description;
+  app.add_option("--scenario", o.scenario_name, "built-in scenario: seed000-s1 | seed000-s2 | seed000-s3 | seed004-drones | mimo-interference (raw ADC)")
+      ->capture_default_str();
+  app.add_option("--scenario-file", o.scenario_file, "load a scenario from JSON (schema: host-sim/scenarios/*.json)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--tracker", o.run.tracker, tracker_help)->capture_default_str();
+  app.add_option("--runs", o.run.runs, "Monte Carlo runs")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--seed", o.run.seed, "random seed (run r uses stream (seed, r, scan))")->capture_default_str();
+  app.add_option("--out", o.run.out_dir, "output directory (default out/<scenario>-<tracker>)");
+  app.add_option("--swerling", o.swerling, "override the Swerling case of every target and clutter component (1 or 3)")
+      ->check(CLI::IsMember({1, 3}));
+  app.add_option("--snr1", o.snr1_text, "override target 1's mean SNR, linear (e.g. 10/3)");
+  app.add_option("--snr2", o.snr2_text, "override target 2's mean SNR, linear (Table V: 10, 20, 30)");
+  app.add_option("--clutter-scale", o.clutter_scale, "multiply every clutter mean count (spec 4.4 sweep)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  app.add_option("--scans", o.scans, "use only the first N scans (0 = all)");
+  app.add_option("--frames", o.frames, "raw-ADC scenarios: use only the first N frames (0 = all)");
+  app.add_option("--rate", o.rate_hz, "raw-ADC scenarios: producer frame rate [Hz], frames dropped on overrun "
+                 "(0 = lossless, as fast as the consumer)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  app.add_option("--csv-runs", o.run.csv_runs, "write CSV rows for the first N runs only (-1 = all)")->capture_default_str();
+  app.add_option("--mfbp-param", o.run.mfbp_params, kMfbpParamHelp);
+  app.add_flag("--no-plot", o.no_plot, "do not write plot.svg");
+  app.add_flag("--no-progress", o.no_progress, "no progress output on stderr");
+}
+
+int run_default_command(const RunOptions& o) {
+  if (is_adc_scenario(o.scenario_name, o.scenario_file)) return run_adc_scenario(o);
+  RunConfig cfg;
+  fill_common(o, cfg);
+  cfg.spec = o.scenario_file.empty() ? resolve_scenario(o.scenario_name) : load_scenario_file(o.scenario_file);
+  apply_target_overrides(o, cfg.spec);
+  truncate_scans(cfg.spec, o.scans);
+  cfg.clutter_scale = o.clutter_scale;
+  if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.spec.name + "-" + cfg.tracker;
+  const Summary s = run_monte_carlo(cfg);
+  print_run_summary(s, cfg.out_dir);
+  return 0;
+}
+
+int run_adc_command(const std::string& name, const std::string& file, AdcRunConfig cfg) {
+  if (!file.empty()) {
+    cfg.scenario = adc::load_adc_scenario_file(file);
+  } else if (!adc::builtin_adc_scenario(name, cfg.scenario)) {
+    std::fprintf(stderr, "error: unknown raw-ADC scenario '%s'\n", name.c_str());
+    return 2;
+  }
+  if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.scenario.name + "-" + cfg.tracker;
+  const AdcSummary s = run_adc_monte_carlo(cfg);
+  print_adc_summary(s, cfg.out_dir);
+  return 0;
+}
+
+void print_run_summary(const Summary& s, const std::string& out_dir) {
+  std::printf("scenario %s, tracker %s: %u run(s) x %u scans, seed %llu, evaluated scans %u..%u\n",
+              s.scenario.c_str(), s.tracker.c_str(), s.runs, s.scans, static_cast<unsigned long long>(s.seed),
+              s.eval_first_scan, s.eval_last_scan);
+  std::printf("  mean OSPA %.2f m   mean GOSPA %.2f m   CAR %.3f (%llu/%llu)   NFT %.3f per scan\n", s.mean_ospa,
+              s.mean_gospa, s.car, static_cast<unsigned long long>(s.car_correct),
+              static_cast<unsigned long long>(s.car_total), s.nft);
+  std::printf("  confirmed tracks per scan %.2f (truths %.2f), distinct confirmed tracks per run %.1f\n",
+              s.mean_confirmed_tracks, s.mean_truths, s.tracks_found_per_run);
+  std::printf("  latency per scan: p50 %.1f us  p99 %.1f us  max %.1f us  (%.1f measurements per scan)\n",
+              s.latency.p50_us, s.latency.p99_us, s.latency.max_us, s.mean_measurements);
+  if (s.step_errors > 0 || s.steps_capacity > 0 || s.steps_partial > 0) {
+    std::string statuses;
+    for (const auto& [name, n] : s.step_status) statuses += " " + name + "=" + std::to_string(n);
+    std::printf("  note: tracker step statuses:%s (counters in summary.json)\n", statuses.c_str());
+  }
+  if (!out_dir.empty()) {
+    std::printf("  wrote %s/{summary.json,truth.csv,measurements.csv,tracks.csv,metrics.csv,plot.svg}\n",
+                out_dir.c_str());
+  }
+}
+
+}  // namespace mptrack::sim

@@ -1,0 +1,69 @@
+// The subcommands of mptrack-sim, one file each (cmd_*.cpp); main.cpp only
+// registers them and dispatches. The top-level options (RunOptions) belong
+// to the default command (cmd_run.cpp); subcommands read the ones they share
+// with it (--tracker, --no-plot, --no-progress) through CLI11's fallthrough.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mptrack/scenario/scenario_spec.h"
+#include "run/run_loop.h"
+#include "run/truncate.h"
+#include "stream/adc_runner.h"
+
+namespace mptrack::sim {
+
+struct Summary;
+
+/// Options of the default command (Monte Carlo runs of one scenario x one tracker).
+struct RunOptions {
+  TrackerRunOptions run;           ///< --tracker, --runs, --seed, --out, --csv-runs, --mfbp-param (plot, progress: below)
+  std::string scenario_name = "seed000-s2";
+  std::string scenario_file;
+  int swerling = 0;
+  std::string snr1_text, snr2_text;
+  double clutter_scale = 1.0;
+  std::uint32_t scans = 0;
+  std::uint32_t frames = 0;
+  double rate_hz = 0.0;
+  bool no_plot = false;
+  bool no_progress = false;
+};
+
+/// A registered subcommand and what it does once parsed.
+struct Subcommand {
+  CLI::App* app = nullptr;
+  std::function<int(const RunOptions&)> run;
+};
+
+// cmd_run.cpp: the default command.
+void add_run_options(CLI::App& app, RunOptions& options);
+int run_default_command(const RunOptions& options);
+
+/// Raw-ADC Monte Carlo of the built-in scenario `name` or the file `file`
+/// ("" = use the name) with `config` (its scenario is replaced), report on
+/// stdout; out_dir "" = out/<scenario>-<tracker>. Returns the exit code.
+int run_adc_command(const std::string& name, const std::string& file, AdcRunConfig config);
+
+/// The report of a measurement-level run on stdout.
+void print_run_summary(const Summary& s, const std::string& out_dir);
+
+// One per subcommand file, in --help order.
+Subcommand add_info_command(CLI::App& app);
+Subcommand add_demo_command(CLI::App& app);
+Subcommand add_table5_command(CLI::App& app);
+Subcommand add_compare_command(CLI::App& app);
+Subcommand add_scenario_export_command(CLI::App& app);
+
+// Shared by several commands (cli_common.cpp).
+/// Help text of --mfbp-param (the same on every command that takes it).
+extern const char* const kMfbpParamHelp;
+/// "10/3", "20" or "3.5" -> double; throws std::runtime_error naming `flag`.
+double parse_ratio(const std::string& text, const char* flag);
+
+}  // namespace mptrack::sim

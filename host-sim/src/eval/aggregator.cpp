@@ -1,0 +1,151 @@
+// The harness aggregator; see aggregator.h.
+#include "eval/aggregator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace mptrack::sim {
+
+// add_counters() names every field: a field added to TrackerCounters must be
+// added there (and to summary.json) before this compiles again.
+static_assert(sizeof(TrackerCounters) == 16 * sizeof(std::uint64_t),
+              "TrackerCounters changed: update add_counters() and summary_to_json()");
+
+LatencyStats latency_stats(std::vector<double> v) {
+  LatencyStats s;
+  s.count = v.size();
+  if (v.empty()) return s;
+  std::sort(v.begin(), v.end());
+  // Nearest rank: the smallest value with at least q of the samples at or below it.
+  const auto rank = [&](double q) {
+    const double r = std::ceil(q * static_cast<double>(v.size()));
+    const std::size_t i = r < 1.0 ? 0 : static_cast<std::size_t>(r) - 1;
+    return v[std::min(i, v.size() - 1)];
+  };
+  s.p50_us = rank(0.50);
+  s.p99_us = rank(0.99);
+  s.max_us = v.back();
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  s.mean_us = sum / static_cast<double>(v.size());
+  return s;
+}
+
+void add_counters(TrackerCounters& sum, const TrackerCounters& run) {
+  sum.scans += run.scans;
+  sum.scans_rejected += run.scans_rejected;
+  sum.measurements_in += run.measurements_in;
+  sum.measurements_invalid += run.measurements_invalid;
+  sum.measurements_over_cap += run.measurements_over_cap;
+  sum.tracks_born += run.tracks_born;
+  sum.tracks_confirmed += run.tracks_confirmed;
+  sum.tracks_deleted += run.tracks_deleted;
+  sum.track_cap_hits += run.track_cap_hits;
+  sum.clutter_born += run.clutter_born;
+  sum.clutter_deleted += run.clutter_deleted;
+  sum.clutter_cap_hits += run.clutter_cap_hits;
+  sum.bp_not_converged += run.bp_not_converged;
+  sum.numerical_repairs += run.numerical_repairs;
+  sum.gap_resets += run.gap_resets;
+  sum.measurements_duplicate += run.measurements_duplicate;
+}
+
+std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t h) {
+  const auto mix = [&h](double v) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    for (int i = 0; i < 8; ++i) {
+      h ^= (bits >> (8 * i)) & 0xffU;
+      h *= 0x100000001b3ULL;  // FNV-1a 64-bit prime
+    }
+  };
+  for (const scenario::SimMeasurement& m : scan.measurements) {
+    mix(m.range_m);
+    mix(m.azimuth_rad);
+    mix(m.amplitude);
+  }
+  return h;
+}
+
+void Summary::count_status(Status st) {
+  ++step_status[to_string(st)];
+  if (st == Status::kPartial) {
+    ++steps_partial;
+  } else if (st == Status::kCapacityExceeded) {
+    ++steps_capacity;
+  } else if (st != Status::kOk) {
+    ++step_errors;
+  }
+}
+
+Aggregator::Aggregator(const SummaryHeader& h) {
+  static_cast<SummaryHeader&>(sum_) = h;
+  sum_.ospa_per_scan.assign(h.scans, 0.0);
+}
+
+void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunRecord& rec,
+                         const std::vector<ScanMetrics>& metrics) {
+  for (const std::uint32_t k : rec.delivered) {
+    const scenario::SimScan& s = scans[k - 1];
+    measurements_ += static_cast<double>(s.measurements.size());
+    sum_.measurement_checksum = measurement_checksum(s, sum_.measurement_checksum);
+    latency_us_.push_back(rec.latency_us[k - 1]);
+  }
+  delivered_ += rec.delivered.size();
+  for (const Status st : rec.statuses) sum_.count_status(st);
+  add_counters(sum_.counters, rec.counters);
+
+  std::set<std::uint32_t> found;
+  for (std::uint32_t k = 1; k <= sum_.scans; ++k) {
+    const ScanMetrics& m = metrics[k - 1];
+    sum_.ospa_per_scan[k - 1] += m.ospa / static_cast<double>(sum_.runs);
+    for (const TrackOut& t : rec.by_scan[k - 1].tracks) {
+      if (t.confirmed) found.insert(t.id);
+    }
+    if (k >= sum_.eval_first_scan && k <= sum_.eval_last_scan) add_eval_scan(m);
+  }
+  tracks_found_ += static_cast<double>(found.size());
+}
+
+void Aggregator::add_eval_scan(const ScanMetrics& m) {
+  ++sum_.eval_scan_count;
+  ospa_ += m.ospa;
+  gospa_ += m.gospa;
+  loc_ += m.gospa_localisation;
+  missed_pow_ += m.gospa_missed;
+  false_pow_ += m.gospa_false;
+  missed_ += static_cast<double>(m.gospa_num_missed);
+  false_n_ += static_cast<double>(m.gospa_num_false);
+  card_ += std::fabs(static_cast<double>(m.confirmed) - static_cast<double>(m.truths));
+  nft_ += m.false_tracks;
+  confirmed_ += m.confirmed;
+  truths_ += m.truths;
+  sum_.car_correct += m.car_correct;
+  sum_.car_total += m.car_total;
+  sum_.car_id_correct += m.car_id_correct;
+}
+
+Summary Aggregator::summary() const {
+  Summary s = sum_;
+  const double n = s.eval_scan_count > 0 ? static_cast<double>(s.eval_scan_count) : 1.0;
+  s.mean_ospa = ospa_ / n;
+  s.mean_gospa = gospa_ / n;
+  s.gospa_localisation = loc_ / n;
+  s.gospa_missed = missed_pow_ / n;
+  s.gospa_false = false_pow_ / n;
+  s.missed_per_scan = missed_ / n;
+  s.false_per_scan = false_n_ / n;
+  s.cardinality_error = card_ / n;
+  s.nft = nft_ / n;
+  s.mean_confirmed_tracks = confirmed_ / n;
+  s.mean_truths = truths_ / n;
+  s.car = s.car_total > 0 ? static_cast<double>(s.car_correct) / static_cast<double>(s.car_total) : 0.0;
+  s.car_identity = s.car_total > 0 ? static_cast<double>(s.car_id_correct) / static_cast<double>(s.car_total) : 0.0;
+  s.tracks_found_per_run = s.runs > 0 ? tracks_found_ / static_cast<double>(s.runs) : 0.0;
+  s.mean_measurements = delivered_ > 0 ? measurements_ / static_cast<double>(delivered_) : 0.0;
+  s.latency = latency_stats(latency_us_);
+  return s;
+}
+
+}  // namespace mptrack::sim

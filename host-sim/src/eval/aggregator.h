@@ -1,0 +1,102 @@
+// The one aggregator of the harness: a tracker's run records and per-scan
+// metrics over every Monte Carlo run -> Summary (means per evaluation scan,
+// step() latency percentiles, step statuses, TrackerCounters sums, the
+// checksum of every measurement it was given). summary.json, the compare
+// table and Table V all read a Summary.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "eval/scan_evaluator.h"
+#include "mptrack/scenario/generator.h"
+#include "mptrack/status.h"
+#include "mptrack/track_report.h"
+#include "run/run_record.h"
+
+namespace mptrack::sim {
+
+struct LatencyStats {
+  double p50_us = 0.0, p99_us = 0.0, max_us = 0.0, mean_us = 0.0;
+  std::size_t count = 0;        ///< step() calls measured
+};
+
+/// Percentiles by the nearest-rank method on a copy of `samples_us`.
+LatencyStats latency_stats(std::vector<double> samples_us);
+
+/// Adds every field of `run` to `sum`.
+void add_counters(TrackerCounters& sum, const TrackerCounters& run);
+
+/// FNV-1a over the bit patterns of (range, azimuth, amplitude) of every
+/// measurement of `scan`, chained from `h`.
+std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t h);
+inline constexpr std::uint64_t kChecksumSeed = 0xcbf29ce484222325ULL;
+
+/// What a Summary describes; the aggregator fills in the rest.
+struct SummaryHeader {
+  std::string scenario, tracker;
+  std::uint32_t runs = 0, scans = 0;
+  std::uint64_t seed = 0;
+  double clutter_scale = 1.0;
+  std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
+};
+
+struct Summary : SummaryHeader {
+  double mean_ospa = 0.0;       ///< over runs x evaluation scans [m]
+  double mean_gospa = 0.0;      ///< [m]
+  double gospa_localisation = 0.0;  ///< mean per evaluation scan [m^p]
+  double gospa_missed = 0.0;        ///< mean per evaluation scan [m^p] = c^p/2 x missed
+  double gospa_false = 0.0;         ///< mean per evaluation scan [m^p] = c^p/2 x false
+  double missed_per_scan = 0.0;     ///< GOSPA unassigned truths per evaluation scan
+  double false_per_scan = 0.0;      ///< GOSPA unassigned tracks per evaluation scan
+  double cardinality_error = 0.0;   ///< mean |#confirmed - #truths| per evaluation scan
+  double car = 0.0;             ///< car_correct / car_total (0 if no detected truth)
+  std::uint64_t car_correct = 0, car_total = 0;
+  double car_identity = 0.0;    ///< car_id_correct / car_total (identity CAR, scan_evaluator.cpp)
+  std::uint64_t car_id_correct = 0;
+  double nft = 0.0;             ///< mean false confirmed tracks per evaluation scan
+  double mean_confirmed_tracks = 0.0;   ///< per evaluation scan
+  double mean_truths = 0.0;             ///< per evaluation scan
+  double tracks_found_per_run = 0.0;    ///< distinct confirmed track ids per run (mean)
+  double mean_measurements = 0.0;       ///< per scan given to the tracker
+  std::uint64_t eval_scan_count = 0;    ///< runs x evaluation scans
+  LatencyStats latency;                 ///< step() of every scan given to the tracker
+  std::vector<double> ospa_per_scan;    ///< mean over runs, index scan-1 [m]
+  std::uint64_t step_errors = 0;        ///< step()/flush() calls returning an error (not kOk, kPartial, kCapacityExceeded)
+  std::uint64_t steps_partial = 0;      ///< kPartial: some measurements rejected (see counters)
+  std::uint64_t steps_capacity = 0;     ///< kCapacityExceeded: an internal cap was hit (see counters)
+  std::map<std::string, std::uint64_t> step_status;  ///< every step()/flush() status by name
+  TrackerCounters counters;             ///< summed over runs
+  std::uint64_t measurement_checksum = kChecksumSeed;  ///< of every measurement the tracker was given, in order
+
+  /// Tallies one step()/flush() status into step_status and the three counts.
+  void count_status(Status st);
+  /// step()/flush() calls that returned anything but kOk.
+  std::uint64_t steps_not_ok() const { return step_errors + steps_partial + steps_capacity; }
+};
+
+class Aggregator {
+ public:
+  explicit Aggregator(const SummaryHeader& header);
+  /// Adds one run: its scans (truth and measurements), the tracker's record
+  /// and the evaluator's metrics of every scan (index scan-1).
+  void add_run(const std::vector<scenario::SimScan>& scans, const RunRecord& record,
+               const std::vector<ScanMetrics>& metrics);
+  /// Means over everything added so far.
+  Summary summary() const;
+
+ private:
+  void add_eval_scan(const ScanMetrics& m);
+
+  Summary sum_;  ///< header, tallies and counts; means are formed in summary()
+  double ospa_ = 0.0, gospa_ = 0.0, loc_ = 0.0, missed_pow_ = 0.0, false_pow_ = 0.0;
+  double missed_ = 0.0, false_n_ = 0.0, card_ = 0.0, nft_ = 0.0, confirmed_ = 0.0, truths_ = 0.0;
+  double measurements_ = 0.0, tracks_found_ = 0.0;
+  std::uint64_t delivered_ = 0;
+  std::vector<double> latency_us_;
+};
+
+}  // namespace mptrack::sim

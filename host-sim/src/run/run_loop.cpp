@@ -1,0 +1,116 @@
+// The Monte Carlo loop; see run_loop.h.
+#include "run/run_loop.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <utility>
+
+#include "progress.h"
+#include "tracker_registry.h"
+
+namespace mptrack::sim {
+
+namespace {
+
+TrackerFactory factory_of(const LoopConfig& cfg) { return cfg.factory != nullptr ? cfg.factory : &make_tracker; }
+
+std::unique_ptr<TrackerAdapter> make_initialised(const LoopConfig& cfg, const std::string& name,
+                                                 const scenario::ScenarioSpec& spec) {
+  std::string error;
+  std::unique_ptr<TrackerAdapter> tracker = factory_of(cfg)(name, error);
+  if (!tracker) throw std::runtime_error(error);
+  TrackerSetup setup;
+  setup.spec = spec;
+  setup.clutter_scale = cfg.clutter_scale;
+  setup.mfbp_params = cfg.mfbp_params;
+  error = tracker->init(setup);
+  if (!error.empty()) throw std::runtime_error("tracker " + name + ": " + error);
+  return tracker;
+}
+
+}  // namespace
+
+std::vector<EstimateOut> estimates_by_scan(std::vector<EstimateOut>& finals,
+                                           const std::vector<std::uint32_t>& delivered, std::uint32_t num_scans) {
+  std::vector<EstimateOut> by_scan(num_scans);
+  for (std::uint32_t k = 1; k <= num_scans; ++k) by_scan[k - 1].scan = k;
+  for (EstimateOut& e : finals) {
+    if (e.scan < 1 || e.scan > delivered.size()) continue;
+    const std::uint32_t scan = delivered[e.scan - 1];
+    e.scan = scan;
+    by_scan[scan - 1] = std::move(e);
+  }
+  return by_scan;
+}
+
+LoopConfig one_tracker_loop(const TrackerRunOptions& o, const std::string& scenario_name) {
+  LoopConfig loop;
+  loop.trackers = {o.tracker};
+  loop.runs = o.runs;
+  loop.seed = o.seed;
+  loop.mfbp_params = o.mfbp_params;
+  loop.progress_label = scenario_name + " " + o.tracker;
+  loop.progress = o.progress;
+  return loop;
+}
+
+void check_loop_config(const LoopConfig& cfg) {
+  if (cfg.runs < 1) throw std::runtime_error("--runs must be >= 1");
+  if (cfg.trackers.empty()) throw std::runtime_error("no tracker to compare");
+  for (const std::string& name : cfg.trackers) {
+    std::string error;
+    if (!factory_of(cfg)(name, error)) throw std::runtime_error(error);
+  }
+}
+
+RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t run, Progress* progress) {
+  const std::uint32_t n = source.num_scans();
+  RunRecord rec;
+  rec.run = run;
+  rec.latency_us.assign(n, 0.0);
+  std::vector<EstimateOut> finals;
+  source.deliver([&](const scenario::SimScan& s) {
+    rec.delivered.push_back(s.scan);
+    const auto t0 = std::chrono::steady_clock::now();
+    const Status st = tracker.step(s, finals);
+    const auto t1 = std::chrono::steady_clock::now();
+    const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
+    rec.latency_us[s.scan - 1] = us;
+    rec.statuses.push_back(st);
+    if (progress != nullptr) progress->tick();
+    return us;
+  });
+  rec.statuses.push_back(tracker.flush(finals));
+  rec.counters = tracker.counters();
+  rec.by_scan = estimates_by_scan(finals, rec.delivered, n);
+  return rec;
+}
+
+std::vector<Summary> run_loop(ScanSource& source, const LoopConfig& cfg, const std::vector<RunObserver*>& observers) {
+  check_loop_config(cfg);
+  const scenario::ScenarioSpec& spec = source.spec();
+  ScanEvaluator evaluator(cfg.ospa_cutoff_m, cfg.ospa_order);
+  std::vector<Aggregator> aggregators;
+  for (const std::string& name : cfg.trackers) {
+    aggregators.emplace_back(SummaryHeader{spec.name, name, cfg.runs, spec.num_scans, cfg.seed, cfg.clutter_scale,
+                                           spec.eval_first_scan, spec.eval_last_scan});
+  }
+  Progress progress(cfg.progress_label,
+                    static_cast<std::uint64_t>(cfg.runs) * spec.num_scans * cfg.trackers.size(), cfg.progress);
+  for (std::uint32_t run = 0; run < cfg.runs; ++run) {
+    source.begin_run(run);
+    for (std::size_t t = 0; t < cfg.trackers.size(); ++t) {
+      std::unique_ptr<TrackerAdapter> tracker = make_initialised(cfg, cfg.trackers[t], spec);
+      const RunRecord rec = run_tracker(source, *tracker, run, &progress);
+      const std::vector<ScanMetrics> metrics = evaluator.evaluate_run(source.scans(), rec.by_scan);
+      aggregators[t].add_run(source.scans(), rec, metrics);
+      for (RunObserver* o : observers) o->on_run(t, source.scans(), rec, metrics);
+    }
+  }
+  progress.finish();
+  std::vector<Summary> out;
+  for (const Aggregator& a : aggregators) out.push_back(a.summary());
+  return out;
+}
+
+}  // namespace mptrack::sim

@@ -1,0 +1,200 @@
+// The harness's evaluator with a chosen (c, p), the run record's scan
+// mapping and the aggregator (means, statuses, counters, latency, checksum),
+// each on hand-computed values.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "eval/aggregator.h"
+#include "eval/scan_evaluator.h"
+#include "run/run_record.h"
+#include "writers.h"
+
+using namespace mptrack::sim;
+using mptrack::Status;
+using mptrack::TrackerCounters;
+namespace sc = mptrack::scenario;
+
+namespace {
+
+sc::TruthState truth_at(std::uint32_t id, double x, double y, std::int32_t meas) {
+  sc::TruthState t;
+  t.target_id = id;
+  t.x.px = x;
+  t.x.py = y;
+  t.measurement_index = meas;
+  return t;
+}
+
+TrackOut track_at(std::uint32_t id, double x, double y, bool confirmed) {
+  TrackOut t;
+  t.id = id;
+  t.px = x;
+  t.py = y;
+  t.confirmed = confirmed;
+  return t;
+}
+
+/// A scan with `n_meas` measurements (ranges 1, 2, ...) and no truth.
+sc::SimScan scan_with(std::uint32_t k, std::size_t n_meas) {
+  sc::SimScan s;
+  s.scan = k;
+  for (std::size_t i = 0; i < n_meas; ++i) {
+    sc::SimMeasurement m;
+    m.range_m = static_cast<double>(i + 1);
+    s.measurements.push_back(m);
+  }
+  return s;
+}
+
+ScanMetrics metrics(double ospa, std::uint32_t truths, std::uint32_t confirmed, std::uint32_t false_tracks) {
+  ScanMetrics m;
+  m.ospa = ospa;
+  m.gospa = 2.0 * ospa;
+  m.truths = truths;
+  m.confirmed = confirmed;
+  m.false_tracks = false_tracks;
+  return m;
+}
+
+/// Run record over 3 scans with empty estimates.
+RunRecord record(std::uint32_t run, std::vector<std::uint32_t> delivered, std::vector<double> latency_us) {
+  RunRecord r;
+  r.run = run;
+  r.delivered = std::move(delivered);
+  r.latency_us = std::move(latency_us);
+  r.by_scan.resize(3);
+  for (std::uint32_t k = 1; k <= 3; ++k) r.by_scan[k - 1].scan = k;
+  return r;
+}
+
+/// Every TrackerCounters field, in declaration order.
+constexpr std::uint64_t TrackerCounters::*kCounterFields[] = {
+    &TrackerCounters::scans,           &TrackerCounters::scans_rejected,   &TrackerCounters::measurements_in,
+    &TrackerCounters::measurements_invalid, &TrackerCounters::measurements_over_cap, &TrackerCounters::tracks_born,
+    &TrackerCounters::tracks_confirmed, &TrackerCounters::tracks_deleted,  &TrackerCounters::track_cap_hits,
+    &TrackerCounters::clutter_born,    &TrackerCounters::clutter_deleted,  &TrackerCounters::clutter_cap_hits,
+    &TrackerCounters::bp_not_converged, &TrackerCounters::numerical_repairs, &TrackerCounters::gap_resets,
+    &TrackerCounters::measurements_duplicate};
+static_assert(sizeof(kCounterFields) / sizeof(kCounterFields[0]) * sizeof(std::uint64_t) == sizeof(TrackerCounters),
+              "a TrackerCounters field is missing from kCounterFields");
+
+/// TrackerCounters with field i (0-based, declaration order) = scale * (i + 1).
+TrackerCounters numbered_counters(std::uint64_t scale) {
+  TrackerCounters c;
+  std::uint64_t i = 0;
+  for (auto f : kCounterFields) c.*f = scale * ++i;
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("sim evaluator: GOSPA components and OSPA with a chosen cutoff and order") {
+  // c = 10 m, p = 2. Truth 1 has a confirmed track 5 m away; truth 2 none.
+  sc::SimScan scan;
+  scan.scan = 1;
+  scan.truth = {truth_at(1, 0.0, 0.0, -1), truth_at(2, 1000.0, 0.0, -1)};
+  EstimateOut est;
+  est.tracks = {track_at(7, 3.0, 4.0, true), track_at(8, 1000.0, 0.0, false)};  // the tentative one is ignored
+  ScanEvaluator ev(10.0, 2.0);
+  const ScanMetrics m = ev.evaluate(scan, est);
+  CHECK(m.gospa_localisation == doctest::Approx(25.0));   // 5^2
+  CHECK(m.gospa_missed == doctest::Approx(50.0));         // c^p / 2 for truth 2
+  CHECK(m.gospa_false == 0.0);
+  CHECK(m.gospa_num_missed == 1);
+  CHECK(m.gospa_num_false == 0);
+  CHECK(m.gospa == doctest::Approx(std::sqrt(75.0)));
+  CHECK(m.ospa == doctest::Approx(std::sqrt((25.0 + 100.0) / 2.0)));  // one cut-off term of c^p over max(m, n) = 2
+  CHECK(m.false_tracks == 0);
+  CHECK_THROWS_AS(ScanEvaluator(10.0, 0.5), std::runtime_error);
+}
+
+TEST_CASE("sim run record: the estimate of tracker step i lands on the i-th delivered scan") {
+  // Scan 2 was dropped: the tracker's second step consumed scan 3.
+  std::vector<EstimateOut> finals(3);
+  finals[0].scan = 1;
+  finals[0].tracks = {track_at(1, 0, 0, true)};
+  finals[1].scan = 2;
+  finals[1].tracks = {track_at(2, 0, 0, true)};
+  finals[2].scan = 3;  // beyond the delivered steps: dropped
+  const std::vector<EstimateOut> by_scan = estimates_by_scan(finals, {1, 3}, 3);
+  REQUIRE(by_scan.size() == 3);
+  CHECK(by_scan[0].scan == 1);
+  CHECK(by_scan[0].tracks.at(0).id == 1);
+  CHECK(by_scan[1].scan == 2);
+  CHECK(by_scan[1].tracks.empty());
+  CHECK(by_scan[2].scan == 3);
+  CHECK(by_scan[2].tracks.at(0).id == 2);
+}
+
+TEST_CASE("sim aggregator: every TrackerCounters field is summed, gap_resets and measurements_duplicate too") {
+  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 1, 3});
+  const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
+  const std::vector<ScanMetrics> m(3);
+  RunRecord a = record(0, {1, 2, 3}, {1, 1, 1});
+  a.counters = numbered_counters(1);
+  RunRecord b = record(1, {1, 2, 3}, {1, 1, 1});
+  b.counters = numbered_counters(100);
+  agg.add_run(scans, a, m);
+  agg.add_run(scans, b, m);
+  const Summary s = agg.summary();
+  std::uint64_t i = 0;
+  for (auto f : kCounterFields) CHECK(s.counters.*f == 101 * ++i);
+  CHECK(s.counters.gap_resets == 101 * 15);
+  CHECK(s.counters.measurements_duplicate == 101 * 16);
+  const auto j = summary_to_json(s);
+  CHECK(j["counters"]["gap_resets"] == 101 * 15);
+  CHECK(j["counters"]["measurements_duplicate"] == 101 * 16);
+  CHECK(j["counters"].size() == 16);
+}
+
+TEST_CASE("sim aggregator: hand-computed means over evaluation scans, statuses, latency and measurements") {
+  // 2 runs x 3 scans, evaluation interval 2..3.
+  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 2, 3});
+  const std::vector<sc::SimScan> scans = {scan_with(1, 4), scan_with(2, 6), scan_with(3, 8)};
+  RunRecord a = record(0, {1, 2, 3}, {10, 20, 30});
+  a.statuses = {Status::kOk, Status::kPartial, Status::kCapacityExceeded, Status::kOk};
+  a.by_scan[0].tracks = {track_at(5, 0, 0, true)};
+  a.by_scan[2].tracks = {track_at(6, 0, 0, true), track_at(9, 0, 0, false)};
+  agg.add_run(scans, a, {metrics(100, 2, 1, 0), metrics(10, 2, 1, 0), metrics(20, 2, 3, 1)});
+  RunRecord b = record(1, {1, 3}, {40, 0, 50});  // scan 2 not delivered
+  b.statuses = {Status::kOk, Status::kNumericalError, Status::kOk};
+  b.by_scan[1].tracks = {track_at(5, 0, 0, true)};
+  agg.add_run(scans, b, {metrics(200, 2, 0, 0), metrics(30, 1, 0, 0), metrics(40, 1, 2, 2)});
+  const Summary s = agg.summary();
+
+  CHECK(s.eval_scan_count == 4);
+  CHECK(s.mean_ospa == doctest::Approx((10.0 + 20.0 + 30.0 + 40.0) / 4.0));
+  CHECK(s.mean_gospa == doctest::Approx(2.0 * 25.0));
+  CHECK(s.mean_truths == doctest::Approx((2.0 + 2.0 + 1.0 + 1.0) / 4.0));
+  CHECK(s.mean_confirmed_tracks == doctest::Approx((1.0 + 3.0 + 0.0 + 2.0) / 4.0));
+  CHECK(s.nft == doctest::Approx((0.0 + 1.0 + 0.0 + 2.0) / 4.0));
+  CHECK(s.cardinality_error == doctest::Approx((1.0 + 1.0 + 1.0 + 1.0) / 4.0));
+  REQUIRE(s.ospa_per_scan.size() == 3);
+  CHECK(s.ospa_per_scan[0] == doctest::Approx(150.0));  // every scan, evaluated or not
+  CHECK(s.ospa_per_scan[1] == doctest::Approx(20.0));
+  CHECK(s.ospa_per_scan[2] == doctest::Approx(30.0));
+  CHECK(s.tracks_found_per_run == doctest::Approx((2.0 + 1.0) / 2.0));  // run 0: ids 5, 6; run 1: id 5
+  // Measurements per delivered scan: run 0 gives 4 + 6 + 8, run 1 gives 4 + 8.
+  CHECK(s.mean_measurements == doctest::Approx(30.0 / 5.0));
+  CHECK(s.latency.count == 5);
+  CHECK(s.latency.max_us == 50.0);
+  CHECK(s.latency.p50_us == 30.0);
+  CHECK(s.steps_partial == 1);
+  CHECK(s.steps_capacity == 1);
+  CHECK(s.step_errors == 1);
+  CHECK(s.steps_not_ok() == 3);
+  CHECK(s.step_status.at("ok") == 4);
+  CHECK(s.step_status.at("numerical_error") == 1);
+}
+
+TEST_CASE("sim aggregator: the measurement checksum chains over delivered scans only, in order") {
+  const std::vector<sc::SimScan> scans = {scan_with(1, 2), scan_with(2, 3), scan_with(3, 1)};
+  Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 1, 3});
+  agg.add_run(scans, record(0, {1, 3}, {0, 0, 0}), std::vector<ScanMetrics>(3));
+  const std::uint64_t expected = measurement_checksum(scans[2], measurement_checksum(scans[0], kChecksumSeed));
+  CHECK(agg.summary().measurement_checksum == expected);
+  CHECK(expected != measurement_checksum(scans[0], measurement_checksum(scans[2], kChecksumSeed)));
+}
