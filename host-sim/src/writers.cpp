@@ -105,22 +105,8 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
   j["steps_capacity_exceeded"] = s.steps_capacity;
   j["step_status"] = s.step_status;
   const TrackerCounters& c = s.counters;
-  j["counters"] = {{"scans", c.scans},
-                   {"scans_rejected", c.scans_rejected},
-                   {"measurements_in", c.measurements_in},
-                   {"measurements_invalid", c.measurements_invalid},
-                   {"measurements_over_cap", c.measurements_over_cap},
-                   {"tracks_born", c.tracks_born},
-                   {"tracks_confirmed", c.tracks_confirmed},
-                   {"tracks_deleted", c.tracks_deleted},
-                   {"track_cap_hits", c.track_cap_hits},
-                   {"clutter_born", c.clutter_born},
-                   {"clutter_deleted", c.clutter_deleted},
-                   {"clutter_cap_hits", c.clutter_cap_hits},
-                   {"bp_not_converged", c.bp_not_converged},
-                   {"numerical_repairs", c.numerical_repairs},
-                   {"gap_resets", c.gap_resets},
-                   {"measurements_duplicate", c.measurements_duplicate}};
+  j["counters"] = nlohmann::ordered_json::object();
+  for_each_counter([&](const char* name, std::uint64_t TrackerCounters::*field) { j["counters"][name] = c.*field; });
   j["ospa_per_scan"] = s.ospa_per_scan;
   return j;
 }

@@ -77,7 +77,7 @@ constexpr std::uint64_t TrackerCounters::*kCounterFields[] = {
     &TrackerCounters::tracks_confirmed, &TrackerCounters::tracks_deleted,  &TrackerCounters::track_cap_hits,
     &TrackerCounters::clutter_born,    &TrackerCounters::clutter_deleted,  &TrackerCounters::clutter_cap_hits,
     &TrackerCounters::bp_not_converged, &TrackerCounters::numerical_repairs, &TrackerCounters::gap_resets,
-    &TrackerCounters::measurements_duplicate};
+    &TrackerCounters::measurements_duplicate, &TrackerCounters::association_cap_hits};
 static_assert(sizeof(kCounterFields) / sizeof(kCounterFields[0]) * sizeof(std::uint64_t) == sizeof(TrackerCounters),
               "a TrackerCounters field is missing from kCounterFields");
 
@@ -129,7 +129,7 @@ TEST_CASE("sim run record: the estimate of tracker step i lands on the i-th deli
   CHECK(by_scan[2].tracks.at(0).id == 2);
 }
 
-TEST_CASE("sim aggregator: every TrackerCounters field is summed, gap_resets and measurements_duplicate too") {
+TEST_CASE("sim aggregator: every TrackerCounters field is summed and written, gap_resets and measurements_duplicate too") {
   Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 1, 3});
   const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
   const std::vector<ScanMetrics> m(3);
@@ -147,7 +147,8 @@ TEST_CASE("sim aggregator: every TrackerCounters field is summed, gap_resets and
   const auto j = summary_to_json(s);
   CHECK(j["counters"]["gap_resets"] == 101 * 15);
   CHECK(j["counters"]["measurements_duplicate"] == 101 * 16);
-  CHECK(j["counters"].size() == 16);
+  CHECK(j["counters"]["association_cap_hits"] == 101 * 17);
+  CHECK(j["counters"].size() == 17);
 }
 
 TEST_CASE("sim aggregator: hand-computed means over evaluation scans, statuses, latency and measurements") {

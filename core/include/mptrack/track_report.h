@@ -66,7 +66,6 @@ struct TrackerCounters {
   std::uint64_t tracks_confirmed = 0;
   std::uint64_t tracks_deleted = 0;
   std::uint64_t track_cap_hits = 0;           ///< births refused because kMaxTargets tracks were alive
-  std::uint64_t association_cap_hits = 0;     ///< gated (track, measurement) pairs dropped by an association cap
   std::uint64_t clutter_born = 0;
   std::uint64_t clutter_deleted = 0;
   std::uint64_t clutter_cap_hits = 0;
@@ -74,6 +73,35 @@ struct TrackerCounters {
   std::uint64_t numerical_repairs = 0;        ///< covariances re-symmetrised / regularised
   std::uint64_t gap_resets = 0;               ///< scans after a gap > Params::max_gap_s: all tracks dropped (scan_clock.h)
   std::uint64_t measurements_duplicate = 0;   ///< exact duplicates of an earlier measurement of the scan, dropped (measurement.h)
+  std::uint64_t association_cap_hits = 0;     ///< gated (track, measurement) pairs dropped by an association cap
 };
+
+/// Calls f(name, member pointer) for every TrackerCounters field, in
+/// declaration order: the one list that summaries and report writers walk,
+/// so a counter added above cannot be left out of them.
+template <class F>
+void for_each_counter(F&& f) {
+  f("scans", &TrackerCounters::scans);
+  f("scans_rejected", &TrackerCounters::scans_rejected);
+  f("measurements_in", &TrackerCounters::measurements_in);
+  f("measurements_invalid", &TrackerCounters::measurements_invalid);
+  f("measurements_over_cap", &TrackerCounters::measurements_over_cap);
+  f("tracks_born", &TrackerCounters::tracks_born);
+  f("tracks_confirmed", &TrackerCounters::tracks_confirmed);
+  f("tracks_deleted", &TrackerCounters::tracks_deleted);
+  f("track_cap_hits", &TrackerCounters::track_cap_hits);
+  f("clutter_born", &TrackerCounters::clutter_born);
+  f("clutter_deleted", &TrackerCounters::clutter_deleted);
+  f("clutter_cap_hits", &TrackerCounters::clutter_cap_hits);
+  f("bp_not_converged", &TrackerCounters::bp_not_converged);
+  f("numerical_repairs", &TrackerCounters::numerical_repairs);
+  f("gap_resets", &TrackerCounters::gap_resets);
+  f("measurements_duplicate", &TrackerCounters::measurements_duplicate);
+  f("association_cap_hits", &TrackerCounters::association_cap_hits);
+}
+/// Number of fields for_each_counter() visits.
+inline constexpr std::size_t kTrackerCounterFields = 17;
+static_assert(sizeof(TrackerCounters) == kTrackerCounterFields * sizeof(std::uint64_t),
+              "TrackerCounters changed: list the new field in for_each_counter()");
 
 }  // namespace mptrack

@@ -7,11 +7,6 @@
 
 namespace mptrack::sim {
 
-// add_counters() names every field: a field added to TrackerCounters must be
-// added there (and to summary.json) before this compiles again.
-static_assert(sizeof(TrackerCounters) == 16 * sizeof(std::uint64_t),
-              "TrackerCounters changed: update add_counters() and summary_to_json()");
-
 LatencyStats latency_stats(std::vector<double> v) {
   LatencyStats s;
   s.count = v.size();
@@ -33,22 +28,7 @@ LatencyStats latency_stats(std::vector<double> v) {
 }
 
 void add_counters(TrackerCounters& sum, const TrackerCounters& run) {
-  sum.scans += run.scans;
-  sum.scans_rejected += run.scans_rejected;
-  sum.measurements_in += run.measurements_in;
-  sum.measurements_invalid += run.measurements_invalid;
-  sum.measurements_over_cap += run.measurements_over_cap;
-  sum.tracks_born += run.tracks_born;
-  sum.tracks_confirmed += run.tracks_confirmed;
-  sum.tracks_deleted += run.tracks_deleted;
-  sum.track_cap_hits += run.track_cap_hits;
-  sum.clutter_born += run.clutter_born;
-  sum.clutter_deleted += run.clutter_deleted;
-  sum.clutter_cap_hits += run.clutter_cap_hits;
-  sum.bp_not_converged += run.bp_not_converged;
-  sum.numerical_repairs += run.numerical_repairs;
-  sum.gap_resets += run.gap_resets;
-  sum.measurements_duplicate += run.measurements_duplicate;
+  for_each_counter([&](const char*, std::uint64_t TrackerCounters::*field) { sum.*field += run.*field; });
 }
 
 std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t h) {
