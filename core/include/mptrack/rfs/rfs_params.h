@@ -7,18 +7,17 @@
 
 #include <cstdint>
 
-#include "mptrack/phd/measurement_model.h"
+#include "mptrack/model/clutter_mode.h"
+#include "mptrack/model/measurement_validator.h"
+#include "mptrack/rfs/measurement_model.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
 
-namespace mptrack::phd {
+namespace mptrack::rfs {
 
-/// How clutter is handled (issue: "selectable three ways").
-enum class ClutterMode : std::uint8_t {
-  kKnownUniform,      ///< uniform, known rate and known amplitude scale (GM-CPHD of Vo 2007)
-  kEstimatedUniform,  ///< uniform, rate and amplitude scale estimated online (lambda-CPHD style)
-  kEstimatedMap,      ///< uniform + Gaussian clutter sources, each with position, rate, power (seed 001)
-};
+/// How clutter is handled (model/clutter_mode.h). The IGGM filters
+/// implement kEstimatedMap (default), kEstimatedUniform and kKnownUniform.
+using ClutterMode = model::ClutterMode;
 
 template <class T>
 struct FilterParams {
@@ -141,6 +140,9 @@ struct FilterParams {
     MPTRACK_TRY(check_range(min_alpha, T(1.001), T(100)));
     MPTRACK_TRY(check(max_alpha > min_alpha && !(max_alpha > kMaxPower)));
     MPTRACK_TRY(check_open_probability(detection_prob));
+    MPTRACK_TRY(check(clutter_mode == ClutterMode::kEstimatedMap ||
+                      clutter_mode == ClutterMode::kEstimatedUniform ||
+                      clutter_mode == ClutterMode::kKnownUniform));
     MPTRACK_TRY(check_range(clutter_rate, T(1e-6), kMaxRate));
     MPTRACK_TRY(check_range(weibull_shape, T(0.1), T(5)));
     MPTRACK_TRY(check_range(clutter_scale, T(1e-6), kMaxPower));
@@ -175,8 +177,22 @@ struct FilterParams {
     return mm;
   }
 
+  /// The intake check (model/measurement_validator.h) over the region in
+  /// measurement coordinates; amplitude thresholded when it is used.
+  model::MeasurementValidator<T> validator() const {
+    model::MeasurementValidator<T> v;
+    v.min0 = region_min0;
+    v.max0 = region_max0;
+    v.min1 = region_min1;
+    v.max1 = region_max1;
+    v.amplitude = use_amplitude ? model::AmplitudeRule::kThresholded : model::AmplitudeRule::kPositive;
+    v.threshold = threshold;
+    v.max_amplitude = max_amplitude;
+    return v;
+  }
+
   /// Measurement-space volume of the region [m rad | m^2].
   T region_volume() const { return (region_max0 - region_min0) * (region_max1 - region_min1); }
 };
 
-}  // namespace mptrack::phd
+}  // namespace mptrack::rfs
