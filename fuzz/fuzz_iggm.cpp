@@ -36,7 +36,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   mptrack::fuzz::FuzzReader in(data, size);
   mptrack::phd::FilterParams<float> p;
   const std::uint8_t cfg = in.u8();
-  p.clutter_mode = static_cast<mptrack::phd::ClutterMode>((cfg >> 2) % 3u);
+  // The three modes the IGGM filters implement, in the corpus' order.
+  constexpr mptrack::phd::ClutterMode kModes[3] = {mptrack::phd::ClutterMode::kKnownUniform,
+                                                   mptrack::phd::ClutterMode::kEstimatedUniform,
+                                                   mptrack::phd::ClutterMode::kEstimatedMap};
+  p.clutter_mode = kModes[(cfg >> 2) % 3u];
   p.use_amplitude = (cfg & 0x20u) == 0;
   if ((cfg & 0x40u) != 0) {  // polar measurement space
     p.space = mptrack::phd::MeasurementSpace::kPolar;

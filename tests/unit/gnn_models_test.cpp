@@ -9,10 +9,9 @@
 
 #include <Eigen/LU>
 
-#include "mptrack/gnn/covariance_guard.h"
-#include "mptrack/gnn/cv_model.h"
 #include "mptrack/gnn/gnn_track.h"
 #include "mptrack/gnn/polar_ekf.h"
+#include "mptrack/model/cv_motion.h"
 
 using Mat4 = Eigen::Matrix<double, 4, 4>;
 using Vec4 = Eigen::Matrix<double, 4, 1>;
@@ -44,7 +43,7 @@ TEST_CASE("cv_predict equals F P F^T + Q built as full matrices") {
   Q(1, 1) = Q(3, 3) = q * dt * dt;
   const Vec4 x_ref = F * x;
   const Mat4 P_ref = F * P * F.transpose() + Q;
-  mptrack::cv_predict(x, P, dt, sa);
+  mptrack::model::cv_predict(x, P, dt, sa * sa);
   CHECK((x - x_ref).cwiseAbs().maxCoeff() < 1e-15);
   CHECK((P - P_ref).cwiseAbs().maxCoeff() < 1e-13);
 }
@@ -124,26 +123,6 @@ TEST_CASE("polar_initiate puts the measurement at zero velocity with covariance 
   CHECK(P(1, 1) == 100.0);
   CHECK(P(3, 3) == 100.0);
   CHECK(P(0, 1) == 0.0);
-}
-
-TEST_CASE("keep_spd leaves an SPD matrix alone and repairs an indefinite one") {
-  Eigen::Matrix4f P = spd_example().cast<float>();
-  P(0, 1) += 1e-6f;  // slight asymmetry: symmetrised, not repaired
-  const Eigen::Matrix4f before = P;
-  CHECK_FALSE(mptrack::keep_spd(P, 1e-6f));
-  CHECK(P(0, 1) == P(1, 0));
-  CHECK(P(2, 2) == before(2, 2));
-  Eigen::Matrix4f bad = Eigen::Matrix4f::Identity();
-  bad(0, 1) = bad(1, 0) = 2.0f;  // eigenvalues -1 and 3
-  bad(3, 3) = -0.5f;
-  CHECK(mptrack::keep_spd(bad, 1e-6f));
-  CHECK(bad(0, 1) == 0.0f);
-  CHECK(bad(0, 0) == 1.0f);
-  CHECK(bad(3, 3) == 1e-6f);
-  CHECK(mptrack::is_spd(bad));
-  Eigen::Matrix4f nan_p = Eigen::Matrix4f::Identity();
-  nan_p(2, 2) = std::numeric_limits<float>::quiet_NaN();
-  CHECK_FALSE(mptrack::is_spd(nan_p));
 }
 
 TEST_CASE("M-of-N logic: 3 hits in 5 confirms, a tentative track dies when 3 of 5 is out of reach") {

@@ -1,15 +1,20 @@
-// IGGM building blocks (phd/iggm.h, phd/cardinality.h, phd/mixture.h):
+// IGGM building blocks (model/amplitude_iggm.h, model/inverse_gamma*.h,
+// phd/cardinality.h, rfs/mixture.h):
 // values checked against closed forms derived by hand in the comments.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 #include "mptrack/phd/cardinality.h"
-#include "mptrack/phd/iggm.h"
-#include "mptrack/phd/mixture.h"
+#include "mptrack/model/amplitude_iggm.h"
+#include "mptrack/model/inverse_gamma.h"
+#include "mptrack/model/inverse_gamma_merge.h"
+#include "mptrack/rfs/mixture.h"
 
 using namespace mptrack;
+using namespace mptrack::model;
 using namespace mptrack::phd;
+using namespace mptrack::rfs;
 
 TEST_CASE("trigamma matches pi^2/6 at 1 and the recurrence at 0.5") {
   CHECK(trigamma(1.0) == doctest::Approx(1.6449340668482264).epsilon(1e-8));
@@ -18,9 +23,9 @@ TEST_CASE("trigamma matches pi^2/6 at 1 and the recurrence at 0.5") {
 }
 
 TEST_CASE("expected detection probability is (beta/(beta+d^2))^alpha for Swerling I") {
-  IgPower<double> p;
-  p.alpha = 3.0;
-  p.beta = 200.0;  // mean varsigma 100
+  InverseGamma<double> p;
+  p.a = 3.0;
+  p.b = 200.0;  // mean varsigma 100
   const double d = 1.5;
   // (200 / 202.25)^3 = 0.96699...
   const double expect = std::pow(200.0 / 202.25, 3.0);
@@ -31,9 +36,9 @@ TEST_CASE("expected detection probability is (beta/(beta+d^2))^alpha for Swerlin
 }
 
 TEST_CASE("K_RL for n = 1 is the Lomax density times 2a") {
-  IgPower<double> p;
-  p.alpha = 4.0;
-  p.beta = 30.0;
+  InverseGamma<double> p;
+  p.a = 4.0;
+  p.b = 30.0;
   const double a = 3.0, d = 1.0;
   const AmplitudeTerms<double> t = amplitude_terms(a, d, 1.0);
   CHECK(t.target_excess == doctest::Approx(8.0));
@@ -55,38 +60,38 @@ TEST_CASE("known Weibull likelihood integrates to 1 above the threshold") {
 }
 
 TEST_CASE("forgetting keeps the IG mean and lowers the shape") {
-  IgPower<double> p;
-  p.alpha = 21.0;
-  p.beta = 400.0;  // mean 20
-  ig_forget(p, 1.25, 2.01);
-  CHECK(p.alpha == doctest::Approx((21.0 + 0.25) / 1.25));
+  InverseGamma<double> p;
+  p.a = 21.0;
+  p.b = 400.0;  // mean 20
+  forget_clamped(p, 1.25, 2.01);
+  CHECK(p.a == doctest::Approx((21.0 + 0.25) / 1.25));
   CHECK(p.mean() == doctest::Approx(20.0).epsilon(1e-12));
 }
 
 TEST_CASE("IG merge of identical beliefs returns them; of two matches E[1/s]") {
-  IgPower<double> a;
-  a.alpha = 5.0;
-  a.beta = 40.0;
+  InverseGamma<double> a;
+  a.a = 5.0;
+  a.b = 40.0;
   IgMergeAccumulator<double> same;
   same.add(0.3, a);
   same.add(0.7, a);
-  const IgPower<double> m = same.result(1e4);
-  CHECK(m.alpha == doctest::Approx(5.0).epsilon(1e-6));
-  CHECK(m.beta == doctest::Approx(40.0).epsilon(1e-6));
+  const InverseGamma<double> m = same.result(1e4);
+  CHECK(m.a == doctest::Approx(5.0).epsilon(1e-6));
+  CHECK(m.b == doctest::Approx(40.0).epsilon(1e-6));
 
-  IgPower<double> b;
-  b.alpha = 10.0;
-  b.beta = 50.0;
+  InverseGamma<double> b;
+  b.a = 10.0;
+  b.b = 50.0;
   IgMergeAccumulator<double> two;
   two.add(1.0, a);
   two.add(1.0, b);
-  const IgPower<double> r = two.result(1e4);
+  const InverseGamma<double> r = two.result(1e4);
   // KL projection keeps E[1/s] = mean of alpha/beta = (0.125 + 0.2)/2 and
   // E[ln 1/s] = mean of psi(alpha) - ln beta: ln alpha - psi(alpha) = c.
-  CHECK(r.alpha / r.beta == doctest::Approx(0.1625).epsilon(1e-12));
+  CHECK(r.a / r.b == doctest::Approx(0.1625).epsilon(1e-12));
   const double c = std::log(0.1625) - 0.5 * (dmath::ddigamma(5.0) - std::log(40.0) +
                                              dmath::ddigamma(10.0) - std::log(50.0));
-  CHECK(std::log(r.alpha) - dmath::ddigamma(r.alpha) == doctest::Approx(c).epsilon(1e-9));
+  CHECK(std::log(r.a) - dmath::ddigamma(r.a) == doctest::Approx(c).epsilon(1e-9));
   CHECK(ig_symmetric_kl(a, a) == doctest::Approx(0.0));
   CHECK(ig_symmetric_kl(a, b) > 0.0);
 }

@@ -308,8 +308,8 @@ TEST_CASE("F12: a GNN track born near range 0 has a positive definite covariance
   // (r sigma_az)^2 underflowed to 0 and the initial position covariance
   // was rank one. polar_initiate floors the cross-range std at 1e-3 x the
   // range std.
-  mptrack::CvState<float> x;
-  mptrack::CvCovariance<float> P;
+  mptrack::model::CvState<float> x;
+  mptrack::model::CvCovariance<float> P;
   for (const float r : {0.0f, 1e-20f, 1e-3f}) {
     mptrack::polar_initiate(r, 0.7f, 0.2f, 0.01f, 10.0f, x, P);
     CHECK(llt_ok(P));

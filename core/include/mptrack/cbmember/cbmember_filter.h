@@ -29,10 +29,11 @@
 
 #include "mptrack/caps.h"
 #include "mptrack/measurement.h"
-#include "mptrack/phd/clutter_estimator.h"
-#include "mptrack/phd/filter_common.h"
-#include "mptrack/phd/mixture.h"
-#include "mptrack/phd/phd_params.h"
+#include "mptrack/rfs/clutter_estimator.h"
+#include "mptrack/rfs/filter_common.h"
+#include "mptrack/rfs/log_sum.h"
+#include "mptrack/rfs/mixture.h"
+#include "mptrack/rfs/rfs_params.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -40,8 +41,8 @@
 
 namespace mptrack::cbmember {
 
-using phd::FilterParams;
-using phd::TargetComponent;
+using rfs::FilterParams;
+using rfs::TargetComponent;
 
 template <class T, class Caps = DefaultCaps>
 class CbMemberFilter {
@@ -53,7 +54,7 @@ class CbMemberFilter {
   using ScanType = Scan<T, Caps::kMaxMeasurements>;
   using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
   using OutputQueue = StaticVector<Estimate, 1>;
-  using Component = TargetComponent<T>;
+  using Component = rfs::TargetComponent<T>;
 
   static constexpr std::size_t kMaxComponentsPerTrack = 4;
   static constexpr std::size_t kMaxRawComponents = 16;
@@ -72,7 +73,7 @@ class CbMemberFilter {
     MPTRACK_TRY(p.validate());
     params_ = p;
     model_ = p.measurement_model();
-    gate_ = phd::chi2_gate_2dof(p.gate_probability);
+    gate_ = rfs::chi2_gate_2dof(p.gate_probability);
     MPTRACK_TRY(clutter_.init(p));
     reduction_.prune_threshold = p.prune_threshold;
     reduction_.merge_threshold = p.merge_threshold;
@@ -138,7 +139,7 @@ class CbMemberFilter {
     for (const Track& t : tracks_) s += t.r;
     return s;
   }
-  const phd::ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents>& clutter() const {
+  const rfs::ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents>& clutter() const {
     return clutter_;
   }
 
@@ -150,12 +151,12 @@ class CbMemberFilter {
     for (const Track& t : tracks_) {
       Track p = t;
       p.r = t.r * params_.survival_prob;
-      for (Component& c : p.comps) phd::predict_component(c, params_, dt);
+      for (Component& c : p.comps) rfs::predict_component(c, params_, dt);
       (void)pred_.push_back(p);  // kMaxTracks <= kMaxWorkTracks
     }
     for (const Track& b : births_) {
       Track p = b;
-      for (Component& c : p.comps) phd::predict_component(c, params_, dt);
+      for (Component& c : p.comps) rfs::predict_component(c, params_, dt);
       if (pred_.push_back(p) != Status::kOk) ++counters_.track_cap_hits;
     }
     births_.clear();
@@ -169,10 +170,10 @@ class CbMemberFilter {
       if (tr.r > kMaxExistence) tr.r = kMaxExistence;
       T pd = T(0);
       for (std::size_t j = 0; j < tr.comps.size(); ++j) {
-        if (phd::linearize_component(tr.comps[j], model_, params_, lin_[t][j])) ++counters_.numerical_repairs;
+        if (rfs::linearize_component(tr.comps[j], model_, params_, lin_[t][j])) ++counters_.numerical_repairs;
         pd += tr.comps[j].weight * lin_[t][j].pd;
       }
-      pd_[t] = phd::clamp_probability(pd);
+      pd_[t] = rfs::clamp_probability(pd);
     }
     upd_.clear();
     // Legacy (missed) Bernoullis.
@@ -192,17 +193,17 @@ class CbMemberFilter {
     for (std::size_t i = 0; i < batch_.n; ++i) {
       clutter_prob_[i] = T(0);
       if (!batch_.valid[i]) continue;
-      phd::LogSum<T> num;
-      phd::LogSum<T> den;
+      rfs::LogSum<T> num;
+      rfs::LogSum<T> den;
       std::size_t best = nt;
       T best_l = T(0);
-      phd::Vec2<T> v;
+      rfs::Vec2<T> v;
       T lq = T(0);
       for (std::size_t t = 0; t < nt; ++t) {
         const Track& tr = pred_[t];
-        phd::LogSum<T> rho;
+        rfs::LogSum<T> rho;
         for (std::size_t j = 0; j < tr.comps.size(); ++j) {
-          if (!phd::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
+          if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
           rho.add(dmath::dlog(tr.comps[j].weight) + lq);
         }
         if (!rho.any || !(tr.r > T(0))) {
@@ -225,20 +226,20 @@ class CbMemberFilter {
         clutter_prob_[i] = T(1);
         continue;
       }
-      const T ltot = phd::log_add(lk, den.value());
+      const T ltot = rfs::log_add(lk, den.value());
       clutter_prob_[i] = dmath::dexp(lk - ltot);
       const T r_u = dmath::dexp(num.value() - ltot);
       if (!(r_u >= params_.existence_prune)) continue;
       // Components: r_t/(1-r_t) w_tj q_tj(z), normalised.
       raw_.clear();
-      phd::LogSum<T> total;
+      rfs::LogSum<T> total;
       for (std::size_t t = 0; t < nt; ++t) {
         const Track& tr = pred_[t];
         if (!(log_rho_[t] > T(-1e29))) continue;
         const T lodds = dmath::dlog(tr.r) - dmath::dlog(T(1) - tr.r);
         for (std::size_t j = 0; j < tr.comps.size(); ++j) {
-          if (!phd::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
-          Component u = phd::updated_component(tr.comps[j], lin_[t][j], batch_, i, v, params_);
+          if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
+          Component u = rfs::updated_component(tr.comps[j], lin_[t][j], batch_, i, v, params_);
           u.weight = lodds + dmath::dlog(tr.comps[j].weight) + lq;  // log for now
           total.add(u.weight);
           push_raw(u);
@@ -250,7 +251,7 @@ class CbMemberFilter {
       u.r = r_u < kMaxExistence ? r_u : kMaxExistence;
       u.label = pred_[best].label;
       counters_.track_cap_hits +=
-          phd::reduce_mixture(raw_, u.comps, reduction_, raw_scratch_, counters_.numerical_repairs);
+          rfs::reduce_mixture(raw_, u.comps, reduction_, raw_scratch_, counters_.numerical_repairs);
       renormalize(u);
       push_track(u);
     }
@@ -327,7 +328,7 @@ class CbMemberFilter {
       Track b;
       b.r = w < T(0.5) ? w : T(0.5);
       b.label = next_label_;
-      Component c = phd::birth_component(batch_.z[i], T(1), next_label_, model_, params_);
+      Component c = rfs::birth_component(batch_.z[i], T(1), next_label_, model_, params_);
       (void)b.comps.push_back(c);
       if (births_.push_back(b) != Status::kOk) {
         ++counters_.track_cap_hits;
@@ -366,8 +367,8 @@ class CbMemberFilter {
   }
 
   Params params_;
-  phd::MeasurementModel<T> model_;
-  phd::ReductionSettings<T> reduction_;
+  rfs::MeasurementModel<T> model_;
+  rfs::ReductionSettings<T> reduction_;
   T gate_ = T(0);
   bool initialized_ = false;
   ScanClock clock_;
@@ -380,14 +381,14 @@ class CbMemberFilter {
   StaticVector<Track, kMaxWorkTracks> pred_;
   StaticVector<Track, kMaxWorkTracks> upd_;
   StaticVector<Component, kMaxRawComponents> raw_;
-  phd::ReductionScratch<kMaxRawComponents> raw_scratch_;
-  std::array<std::array<phd::Linearized<T>, kMaxComponentsPerTrack>, kMaxWorkTracks> lin_{};
+  rfs::ReductionScratch<kMaxRawComponents> raw_scratch_;
+  std::array<std::array<rfs::Linearized<T>, kMaxComponentsPerTrack>, kMaxWorkTracks> lin_{};
   std::array<T, kMaxWorkTracks> pd_{};
   std::array<T, kMaxWorkTracks> log_rho_{};
   std::array<bool, kMaxWorkTracks> taken_{};
-  phd::MeasurementBatch<T, Caps::kMaxMeasurements> batch_;
+  rfs::MeasurementBatch<T, Caps::kMaxMeasurements> batch_;
   std::array<T, Caps::kMaxMeasurements> clutter_prob_{};
-  phd::ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents> clutter_;
+  rfs::ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents> clutter_;
   OutputQueue outputs_;
 };
 

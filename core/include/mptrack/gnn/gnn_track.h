@@ -12,15 +12,15 @@
 
 #include <cstdint>
 
-#include "mptrack/gnn/cv_model.h"
+#include "mptrack/model/cv_motion.h"
 
 namespace mptrack {
 
 template <class T>
 struct GnnTrack {
   std::uint32_t id = 0;                     ///< stable, never reused within a run
-  CvState<T> x = CvState<T>::Zero();        ///< [px m, vx m/s, py m, vy m/s]
-  CvCovariance<T> P = CvCovariance<T>::Zero();
+  model::CvState<T> x = model::CvState<T>::Zero();        ///< [px m, vx m/s, py m, vy m/s]
+  model::CvCovariance<T> P = model::CvCovariance<T>::Zero();
   std::uint32_t hit_history = 0;            ///< bit k = hit k scans ago
   std::uint32_t age_scans = 0;              ///< scans since birth, birth scan = 1
   std::uint32_t consecutive_misses = 0;     ///< [scans]

@@ -5,7 +5,7 @@
 // Follows the tracker contract of track_report.h. Per step():
 //   1. validate the scan (time strictly increasing, NaN/Inf or out-of-region
 //      measurements skipped and counted);
-//   2. predict every track with the CV model (cv_model.h);
+//   2. predict every track with the CV model (model/cv_motion.h);
 //   3. gate and associate: global nearest neighbour by an optimal
 //      assignment (metrics/assignment.h) on the squared Mahalanobis
 //      distance d2 = nu^T S^-1 nu, gate d2 <= gate_chi2;
@@ -38,13 +38,14 @@
 #include <Eigen/Core>
 
 #include "mptrack/caps.h"
-#include "mptrack/gnn/covariance_guard.h"
-#include "mptrack/gnn/cv_model.h"
 #include "mptrack/gnn/gnn_params.h"
 #include "mptrack/gnn/gnn_track.h"
 #include "mptrack/gnn/polar_ekf.h"
 #include "mptrack/measurement.h"
 #include "mptrack/metrics/assignment.h"
+#include "mptrack/model/cv_motion.h"
+#include "mptrack/model/measurement_validator.h"
+#include "mptrack/model/spd_guard.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -112,8 +113,8 @@ class GnnTracker {
     if (clock_.has_time()) {
       const T dt = clock_.elapsed_s(scan.time_us, T(0));
       for (auto& t : tracks_) {
-        cv_predict(t.x, t.P, dt, params_.accel_std_mps2);
-        if (keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
+        model::cv_predict(t.x, t.P, dt, params_.accel_std_mps2 * params_.accel_std_mps2);
+        if (model::keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
       }
     }
     MPTRACK_TRY(associate(scan));
@@ -147,12 +148,14 @@ class GnnTracker {
     std::size_t invalid = 0;
     std::size_t duplicate = 0;
     counters_.measurements_in += scan.measurements.size();
+    model::MeasurementValidator<T> check;  // model/measurement_validator.h; amplitude unused
+    check.min0 = params_.min_range_m;
+    check.max0 = params_.max_range_m;
+    check.min1 = params_.min_azimuth_rad;
+    check.max1 = params_.max_azimuth_rad;
     for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
       const Measurement<T>& m = scan.measurements[j];
-      const bool ok = is_finite(m.range_m) && is_finite(m.azimuth_rad) &&
-                      !(m.range_m < params_.min_range_m) && !(m.range_m > params_.max_range_m) &&
-                      !(m.azimuth_rad < params_.min_azimuth_rad) &&
-                      !(m.azimuth_rad > params_.max_azimuth_rad);
+      const bool ok = check.valid(m);
       kept_[j] = false;
       if (!ok) {
         ++invalid;
@@ -217,7 +220,7 @@ class GnnTracker {
         const Measurement<T>& m = scan.measurements[scan_j];
         polar_update(t.x, t.P, polar_innovation(m.range_m, m.azimuth_rad, pred_[i]), pred_[i],
                      params_.sigma_range_m, params_.sigma_azimuth_rad);
-        if (keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
+        if (model::keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
         t.measurement_index = static_cast<std::int32_t>(scan_j);
       }
       record_scan(t, hit);

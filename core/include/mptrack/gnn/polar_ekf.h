@@ -7,9 +7,7 @@
 // Cartesian R (and a debiasing term at large cross-range error). The EKF
 // linearises h at the predicted state, where the error is far smaller.
 //
-//   h(x) = [ sqrt(px^2 + py^2), atan2(py, px) ]
-//   H    = [[ px/r,    0, py/r,    0],
-//           [-py/r^2,  0, px/r^2,  0]]
+//   h(x), H: model/polar_measurement.h (range, azimuth rows)
 //   S = H P H^T + R,  K = P H^T S^-1,
 //   Joseph form: P <- (I - K H) P (I - K H)^T + K R K^T
 //     (Bar-Shalom, Li, Kirubarajan 2001, eq. 5.2.3-18; stays PSD under
@@ -22,9 +20,11 @@
 
 #include <Eigen/Core>
 
-#include "mptrack/gnn/cv_model.h"
 #include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
+#include "mptrack/model/cv_motion.h"
+#include "mptrack/model/mahalanobis.h"
+#include "mptrack/model/polar_measurement.h"
 
 namespace mptrack {
 
@@ -44,7 +44,7 @@ constexpr T kMinLinearisationRange = T(1e-3);
 
 /// Predicted measurement, Jacobian and innovation covariance of (x, P).
 template <class T>
-PolarPrediction<T> polar_predict(const CvState<T>& x, const CvCovariance<T>& P, T sigma_range_m,
+PolarPrediction<T> polar_predict(const model::CvState<T>& x, const model::CvCovariance<T>& P, T sigma_range_m,
                                  T sigma_azimuth_rad) {
   PolarPrediction<T> out;
   const T px = x(0);
@@ -52,12 +52,7 @@ PolarPrediction<T> polar_predict(const CvState<T>& x, const CvCovariance<T>& P, 
   const T r2 = px * px + py * py;
   const T r = std::sqrt(r2);
   if (!(r > kMinLinearisationRange<T>)) return out;
-  out.z_hat(0) = r;
-  out.z_hat(1) = dmath::datan2(py, px);
-  out.H(0, 0) = px / r;
-  out.H(0, 2) = py / r;
-  out.H(1, 0) = -py / r2;
-  out.H(1, 2) = px / r2;
+  model::polar_linearize(x, r2, out.z_hat, out.H);
   const Eigen::Matrix<T, 4, 2> PHt = P * out.H.transpose();
   out.S = out.H * PHt;
   // Symmetrise before adding R so S is exactly symmetric.
@@ -66,8 +61,9 @@ PolarPrediction<T> polar_predict(const CvState<T>& x, const CvCovariance<T>& P, 
   out.S(1, 0) = s01;
   out.S(0, 0) += sigma_range_m * sigma_range_m;
   out.S(1, 1) += sigma_azimuth_rad * sigma_azimuth_rad;
-  const T det = out.S(0, 0) * out.S(1, 1) - s01 * s01;
-  if (!(det > T(0)) || !(out.S(0, 0) > T(0)) || !(det - det == T(0))) return out;
+  const model::Mahalanobis2<T> checked(out.S);  // det > 0 and finite, S00 > 0
+  if (!checked.valid()) return out;
+  const T det = checked.det();
   out.S_inv(0, 0) = out.S(1, 1) / det;
   out.S_inv(1, 1) = out.S(0, 0) / det;
   out.S_inv(0, 1) = -s01 / det;
@@ -101,16 +97,16 @@ T mahalanobis2(const Eigen::Matrix<T, 2, 1>& nu, const PolarPrediction<T>& pred)
 
 /// EKF update with the Joseph-form covariance (pred must be valid).
 template <class T>
-void polar_update(CvState<T>& x, CvCovariance<T>& P, const Eigen::Matrix<T, 2, 1>& nu,
+void polar_update(model::CvState<T>& x, model::CvCovariance<T>& P, const Eigen::Matrix<T, 2, 1>& nu,
                   const PolarPrediction<T>& pred, T sigma_range_m, T sigma_azimuth_rad) {
   const Eigen::Matrix<T, 4, 2> PHt = P * pred.H.transpose();
   const Eigen::Matrix<T, 4, 2> K = PHt * pred.S_inv;
   x += K * nu;
-  const CvCovariance<T> A = CvCovariance<T>::Identity() - K * pred.H;
+  const model::CvCovariance<T> A = model::CvCovariance<T>::Identity() - K * pred.H;
   Eigen::Matrix<T, 2, 2> R = Eigen::Matrix<T, 2, 2>::Zero();
   R(0, 0) = sigma_range_m * sigma_range_m;
   R(1, 1) = sigma_azimuth_rad * sigma_azimuth_rad;
-  const CvCovariance<T> AP = A * P;
+  const model::CvCovariance<T> AP = A * P;
   const Eigen::Matrix<T, 4, 2> KR = K * R;
   P = AP * A.transpose() + KR * K.transpose();
 }
@@ -120,11 +116,11 @@ void polar_update(CvState<T>& x, CvCovariance<T>& P, const Eigen::Matrix<T, 2, 1
 /// the measurement; velocity covariance init_velocity_std^2 I.
 template <class T>
 void polar_initiate(T range_m, T azimuth_rad, T sigma_range_m, T sigma_azimuth_rad,
-                    T init_velocity_std_mps, CvState<T>& x, CvCovariance<T>& P) {
+                    T init_velocity_std_mps, model::CvState<T>& x, model::CvCovariance<T>& P) {
   T s;
   T c;
   dmath::dsincos(azimuth_rad, s, c);
-  x = CvState<T>::Zero();
+  x = model::CvState<T>::Zero();
   x(0) = range_m * c;
   x(2) = range_m * s;
   const T var_r = sigma_range_m * sigma_range_m;
@@ -137,7 +133,7 @@ void polar_initiate(T range_m, T azimuth_rad, T sigma_range_m, T sigma_azimuth_r
   const T r_floor = T(1e-3) * sigma_range_m / sigma_azimuth_rad;
   const T r_cov = range_m > r_floor ? range_m : r_floor;
   const T var_a = r_cov * r_cov * sigma_azimuth_rad * sigma_azimuth_rad;  // cross-range [m^2]
-  P = CvCovariance<T>::Zero();
+  P = model::CvCovariance<T>::Zero();
   P(0, 0) = c * c * var_r + s * s * var_a;
   P(2, 2) = s * s * var_r + c * c * var_a;
   const T cross = s * c * (var_r - var_a);

@@ -1,66 +1,10 @@
-// Fixed-size Cholesky factorisation and solve (N <= 4), written out so the
-// code path is plain loops: Eigen's LLT::solve with a matrix right-hand
-// side goes through its blocked triangular solver, which references the
-// heap (malloc/free for its workspace) and fails the core nm check.
-// Fixed evaluation order, so the bits are the same on every target.
+// Forwarding header: the Cholesky routines live in model/cholesky.h.
 #pragma once
 
-#include <cmath>
-
-#include <Eigen/Core>
+#include "mptrack/model/cholesky.h"
 
 namespace mptrack::mfbp {
-
-/// A = L L^T for symmetric A (lower triangle read). False if A is not
-/// positive definite (a pivot <= 0 or non-finite); L is then unspecified.
-template <class T, int N>
-bool cholesky(const Eigen::Matrix<T, N, N>& A, Eigen::Matrix<T, N, N>& L) {
-  L.setZero();
-  for (int j = 0; j < N; ++j) {
-    T d = A(j, j);
-    for (int k = 0; k < j; ++k) d -= L(j, k) * L(j, k);
-    if (!(d > T(0))) return false;  // also rejects NaN
-    const T ljj = std::sqrt(d);
-    L(j, j) = ljj;
-    for (int i = j + 1; i < N; ++i) {
-      T s = A(i, j);
-      for (int k = 0; k < j; ++k) s -= L(i, k) * L(j, k);
-      L(i, j) = s / ljj;
-    }
-  }
-  return true;
-}
-
-/// X = A^-1 B given the Cholesky factor L of A (forward then back substitution).
-/// Forward substitution: L^-1 b (whitens b when L L^T is its covariance).
-template <class T, int N>
-Eigen::Matrix<T, N, 1> cholesky_whiten(const Eigen::Matrix<T, N, N>& L, const Eigen::Matrix<T, N, 1>& b) {
-  Eigen::Matrix<T, N, 1> y;
-  for (int i = 0; i < N; ++i) {
-    T s = b(i);
-    for (int k = 0; k < i; ++k) s -= L(i, k) * y(k);
-    y(i) = s / L(i, i);
-  }
-  return y;
-}
-
-template <class T, int N, int M>
-Eigen::Matrix<T, N, M> cholesky_solve(const Eigen::Matrix<T, N, N>& L, const Eigen::Matrix<T, N, M>& B) {
-  Eigen::Matrix<T, N, M> X;
-  for (int c = 0; c < M; ++c) {
-    Eigen::Matrix<T, N, 1> y;
-    for (int i = 0; i < N; ++i) {
-      T s = B(i, c);
-      for (int k = 0; k < i; ++k) s -= L(i, k) * y(k);
-      y(i) = s / L(i, i);
-    }
-    for (int i = N - 1; i >= 0; --i) {
-      T s = y(i);
-      for (int k = i + 1; k < N; ++k) s -= L(k, i) * X(k, c);
-      X(i, c) = s / L(i, i);
-    }
-  }
-  return X;
-}
-
+using model::cholesky;
+using model::cholesky_solve;
+using model::cholesky_whiten;
 }  // namespace mptrack::mfbp

@@ -21,6 +21,7 @@
 
 #include <Eigen/Core>
 
+#include "mptrack/model/clutter_mode.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
 
@@ -50,12 +51,11 @@ enum class NwForgetting : std::uint8_t {
   kPaper,           ///< W <- xi_W W (literal; diverges over long runs)
 };
 
-/// Clutter model used by the association (spec 5.2 ablations).
-enum class ClutterMode : std::uint8_t {
-  kEstimate,          ///< uniform + estimated Gaussian components (MP-RMTT), default
-  kUniformKnownRate,  ///< uniform only, known rate uniform_rate_per_scan (MP-RMTT-NCE)
-  kKnown,             ///< clutter map given exactly in known_clutter (MP-RMTT-KCE)
-};
+/// Clutter model used by the association (model/clutter_mode.h). MF-BP
+/// implements kEstimatedMap (MP-RMTT, default), kKnownRateUniform
+/// (MP-RMTT-NCE, rate uniform_rate_per_scan) and kKnownMap (MP-RMTT-KCE,
+/// map in known_clutter); validate() rejects the others.
+using ClutterMode = model::ClutterMode;
 
 /// One known non-uniform clutter component (measurement space), for kKnown.
 template <class T>
@@ -327,6 +327,9 @@ Status validate(const MfbpParams<T>& p, std::size_t max_window) {
   MPTRACK_TRY(check(p.clutter_seed_factor > T(0) && !(p.clutter_seed_factor > kMaxSeedFactor)));
   MPTRACK_TRY(check_range(p.clutter_death_count, T(0), kMaxCount));
   MPTRACK_TRY(check(p.clutter_death_windows >= 1));
+  MPTRACK_TRY(check(p.clutter_mode == ClutterMode::kEstimatedMap ||
+                    p.clutter_mode == ClutterMode::kKnownRateUniform ||
+                    p.clutter_mode == ClutterMode::kKnownMap));
   const auto& kc = p.known_clutter;
   MPTRACK_TRY(check(kc.num_components <= kMaxKnownClutterComponents));
   if (p.clutter_mode == ClutterMode::kKnown) {

@@ -99,7 +99,7 @@ struct NormalWishart {
     const T det = w_inv(0, 0) * w_inv(1, 1) - w_inv(0, 1) * w_inv(1, 0);
     const T e_log_det = dmath::ddigamma(T(0.5) * nu) + dmath::ddigamma(T(0.5) * (nu - T(1))) +
                         T(2) * T(0.69314718055994531) - dmath::dlog(det);
-    return -T(1.8378770664093453) + T(0.5) * e_log_det;
+    return -dmath::kLnTwoPi<T> + T(0.5) * e_log_det;
   }
 
   /// E[(y - x^c)^T D (y - x^c)] = q / c + nu (y - mu)^T W (y - mu).

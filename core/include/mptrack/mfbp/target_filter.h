@@ -1,10 +1,10 @@
 // Target kinematics: CV prediction, cubature update on the association-
 // weighted pseudo-measurement and the linear RTS smoother (spec 2.1, 3.9).
 //
-// Covariances stay symmetric positive definite in float: every update is
-// re-symmetrised and checked with a Cholesky factorisation; a failed check
-// is repaired by diagonal loading and reported to the caller (who counts it
-// in TrackerCounters::numerical_repairs).
+// Covariances stay symmetric positive definite in float through the SPD
+// guard of model/spd_guard.h (symmetrise, Cholesky test with the F14 pivot
+// rule, diagonal loading); a repair is reported to the caller (who counts
+// it in TrackerCounters::numerical_repairs).
 #pragma once
 
 #include <array>
@@ -12,8 +12,10 @@
 
 #include <Eigen/Core>
 
-#include "mptrack/mfbp/cholesky.h"
 #include "mptrack/mfbp/cubature.h"
+#include "mptrack/model/cholesky.h"
+#include "mptrack/model/cv_motion.h"
+#include "mptrack/model/spd_guard.h"
 
 namespace mptrack::mfbp {
 
@@ -43,58 +45,18 @@ struct PackedCov4 {
   }
 };
 
-/// F = I2 (x) [[1, dt], [0, 1]] and Q = q I2 (x) [[dt^4/4, dt^3/2], [dt^3/2, dt^2]] (P103).
+/// F and Q of the CV model (model/cv_motion.h; q is the acceleration
+/// variance sigma_v^2 [m^2/s^4]).
 template <class T>
 void cv_model(T dt_s, T q, Mat4<T>& F, Mat4<T>& Q) {
-  F.setIdentity();
-  F(0, 1) = dt_s;
-  F(2, 3) = dt_s;
-  const T dt2 = dt_s * dt_s;
-  const T q11 = q * dt2 * dt2 * T(0.25);
-  const T q12 = q * dt2 * dt_s * T(0.5);
-  const T q22 = q * dt2;
-  Q.setZero();
-  Q(0, 0) = q11; Q(0, 1) = q12; Q(1, 0) = q12; Q(1, 1) = q22;
-  Q(2, 2) = q11; Q(2, 3) = q12; Q(3, 2) = q12; Q(3, 3) = q22;
+  model::cv_transition(dt_s, q, F, Q);
 }
 
-/// Forces symmetry and positive definiteness. Returns true if a repair
-/// (diagonal loading) was needed beyond symmetrisation.
+/// The SPD guard of every tracker (model/spd_guard.h). Returns true if a
+/// repair beyond symmetrisation was needed.
 template <class T, int N>
 bool make_spd(Eigen::Matrix<T, N, N>& P) {
-  for (int r = 0; r < N; ++r) {
-    for (int c = r + 1; c < N; ++c) {
-      const T s = T(0.5) * (P(r, c) + P(c, r));
-      P(r, c) = s;
-      P(c, r) = s;
-    }
-  }
-  bool repaired = false;
-  Eigen::Matrix<T, N, N> L;
-  // A pivot below 1e-4 of its diagonal (a multiple correlation above
-  // 0.99995) counts as singular too: such a float covariance passes this
-  // Cholesky but not Eigen's LLT after the next rounding (fuzz finding F14,
-  // docs/reliability.md). Real track covariances stay far from it.
-  const auto well_conditioned = [&L, &P]() {
-    for (int j = 0; j < N; ++j) {
-      if (!(L(j, j) * L(j, j) >= T(1e-4) * P(j, j))) return false;
-    }
-    return true;
-  };
-  for (int attempt = 0; attempt < 8; ++attempt) {
-    if (cholesky<T, N>(P, L) && well_conditioned()) return repaired;
-    repaired = true;
-    T scale = T(0);
-    for (int r = 0; r < N; ++r) scale = P(r, r) > scale ? P(r, r) : scale;
-    T load = scale * T(1e-6);
-    for (int k = 0; k < attempt; ++k) load *= T(10);
-    if (!(load > T(0))) load = T(1e-6);
-    for (int r = 0; r < N; ++r) {
-      if (!(P(r, r) > T(0))) P(r, r) = T(0);
-      P(r, r) += load;
-    }
-  }
-  return repaired;
+  return model::keep_spd(P, model::kDefaultMinVariance<T>);
 }
 
 /// x <- F x, P <- F P F^T + Q. Returns true if P needed a repair.
@@ -127,13 +89,13 @@ bool cubature_update_m(Vec4<T>& x, Mat4<T>& P, const Eigen::Matrix<T, M, 1>& y_b
   if (!cubature_moments<T, M>(x, P, z_hat, Sz, Cxz)) return true;
   const MatM S = Sz + R_bar;
   MatM L;
-  if (!cholesky<T, M>(S, L)) return true;
+  if (!model::cholesky<T, M>(S, L)) return true;
   // K = Cxz S^-1, computed as (S^-1 Cxz^T)^T through the factorisation.
-  const Eigen::Matrix<T, M, 4> Kt = cholesky_solve<T, M, 4>(L, Cxz.transpose());
+  const Eigen::Matrix<T, M, 4> Kt = model::cholesky_solve<T, M, 4>(L, Cxz.transpose());
   const Mat4M K = Kt.transpose();
   VecM e = y_bar - z_hat;
   e(1) = wrap_angle(e(1));
-  if (white != nullptr) *white = cholesky_whiten<T, M>(L, e).template head<2>();
+  if (white != nullptr) *white = model::cholesky_whiten<T, M>(L, e).template head<2>();
   x += K * e;
   P -= K * S * K.transpose();
   repaired = make_spd(P) || repaired;
@@ -159,14 +121,14 @@ bool rts_step(const Vec4<T>& xf, const Mat4<T>& Pf, const Vec4<T>& xs_next,
   Mat4<T> P_pred = F * Pf * F.transpose() + Q;
   bool repaired = make_spd(P_pred);
   Mat4<T> L;
-  if (!cholesky<T, 4>(P_pred, L)) {  // make_spd failed to repair: keep the filtered estimate
+  if (!model::cholesky<T, 4>(P_pred, L)) {  // make_spd failed to repair: keep the filtered estimate
     xs = xf;
     Ps = Pf;
     return true;
   }
   // G = Pf F^T P_pred^-1  <=>  G^T = P_pred^-1 (F Pf)  (P_pred symmetric).
   const Mat4<T> FPf = F * Pf;
-  const Mat4<T> G = cholesky_solve<T, 4, 4>(L, FPf).transpose();
+  const Mat4<T> G = model::cholesky_solve<T, 4, 4>(L, FPf).transpose();
   xs = xf + G * (xs_next - x_pred);
   Ps = Pf + G * (Ps_next - P_pred) * G.transpose();
   repaired = make_spd(Ps) || repaired;

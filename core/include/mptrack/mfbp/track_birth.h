@@ -6,13 +6,7 @@
 
 namespace mptrack::mfbp {
 
-/// Cartesian position of polar y = (r, theta): p = r [cos theta, sin theta].
-template <class T>
-Vec2<T> cartesian_of_polar(T range_m, T az_rad) {
-  T s, c;
-  dmath::dsincos(az_rad, s, c);
-  return Vec2<T>(range_m * c, range_m * s);
-}
+using model::cartesian_of_polar;
 
 /// Position covariance J R J^T of the polar->Cartesian map at (r, theta),
 /// J = [[cos, -r sin], [sin, r cos]], R = diag(sigma_r^2, sigma_az^2).

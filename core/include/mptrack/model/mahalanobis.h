@@ -1,5 +1,6 @@
-// Checked squared Mahalanobis distances for the 2-D measurement space
-// (range, azimuth) used by every tracker's gates and likelihoods.
+// Checked squared Mahalanobis distances: the 2-D measurement space
+// (range, azimuth) used by every tracker's gates and likelihoods, and the
+// N-D (4-D state) form through the Cholesky factor.
 //
 // d^2 = e^T C^-1 e for a 2x2 covariance C, through the adjugate:
 //   d^2 = (C11 e0^2 - 2 C01 e0 e1 + C00 e1^2) / det C,   det C = C00 C11 - C01 C10.
@@ -12,6 +13,8 @@
 #pragma once
 
 #include <Eigen/Core>
+
+#include "mptrack/model/cholesky.h"
 
 namespace mptrack::model {
 
@@ -49,6 +52,17 @@ bool mahalanobis2(const Eigen::Matrix<T, 2, 1>& e, const Eigen::Matrix<T, 2, 2>&
   const Mahalanobis2<T> m(C);
   if (!m.valid()) return false;
   d2 = m.distance2(e);
+  return true;
+}
+
+/// N x N (e.g. 4x4 state space) d^2 = e^T C^-1 e through the Cholesky
+/// factor: d^2 = e . (L L^T)^-1 e (forward and back substitution, fixed
+/// order). False (d2 untouched) if C is not positive definite.
+template <class T, int N>
+bool mahalanobis_n(const Eigen::Matrix<T, N, 1>& e, const Eigen::Matrix<T, N, N>& C, T& d2) {
+  Eigen::Matrix<T, N, N> L;
+  if (!cholesky<T, N>(C, L)) return false;
+  d2 = e.dot(cholesky_solve<T, N, 1>(L, e));
   return true;
 }
 

@@ -19,7 +19,7 @@
 #include <cstddef>
 
 #include "mptrack/math/detmath.h"
-#include "mptrack/phd/measurement_model.h"
+#include "mptrack/rfs/log_sum.h"
 
 namespace mptrack::phd {
 
@@ -77,7 +77,7 @@ class Cardinality {
       if (top < N) ++top;
       for (std::size_t j = top; j >= 1; --j) {
         if (out[j - 1] <= kLogZero) continue;
-        out[j] = out[j] <= kLogZero ? lr[i] + out[j - 1] : log_add(out[j], lr[i] + out[j - 1]);
+        out[j] = out[j] <= kLogZero ? lr[i] + out[j - 1] : rfs::log_add(out[j], lr[i] + out[j - 1]);
       }
     }
     return top;
@@ -89,7 +89,7 @@ class Cardinality {
     for (std::size_t n = 0; n <= N; ++n) {
       out[n] = kLogZero;
       if (n < u) continue;
-      LogSum<T> s;
+      rfs::LogSum<T> s;
       const std::size_t jmax = top < n - u ? top : n - u;
       for (std::size_t j = 0; j <= jmax; ++j) {
         if (le[j] <= kLogZero) continue;
@@ -102,7 +102,7 @@ class Cardinality {
 
   /// ln <A, p>.
   T log_inner(const std::array<T, N + 1>& la) const {
-    LogSum<T> s;
+    rfs::LogSum<T> s;
     for (std::size_t n = 0; n <= N; ++n) {
       if (!(p_[n] > T(0)) || la[n] <= kLogZero) continue;
       s.add(dmath::dlog(p_[n]) + la[n]);

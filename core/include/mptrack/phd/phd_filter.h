@@ -32,9 +32,10 @@
 #include "mptrack/caps.h"
 #include "mptrack/measurement.h"
 #include "mptrack/phd/cardinality.h"
-#include "mptrack/phd/clutter_estimator.h"
-#include "mptrack/phd/filter_common.h"
-#include "mptrack/phd/mixture.h"
+#include "mptrack/rfs/clutter_estimator.h"
+#include "mptrack/rfs/filter_common.h"
+#include "mptrack/rfs/log_sum.h"
+#include "mptrack/rfs/mixture.h"
 #include "mptrack/phd/phd_params.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
@@ -53,7 +54,7 @@ class PhdFilter {
   using ScanType = Scan<T, Caps::kMaxMeasurements>;
   using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
   using OutputQueue = StaticVector<Estimate, 1>;
-  using Component = TargetComponent<T>;
+  using Component = rfs::TargetComponent<T>;
 
   static constexpr std::size_t kMaxMeasurements = Caps::kMaxMeasurements;
   static constexpr std::size_t kMaxComponents = 2 * Caps::kMaxTargets;
@@ -67,7 +68,7 @@ class PhdFilter {
     MPTRACK_TRY(p.validate());
     params_ = p;
     model_ = p.measurement_model();
-    gate_ = chi2_gate_2dof(p.gate_probability);
+    gate_ = rfs::chi2_gate_2dof(p.gate_probability);
     MPTRACK_TRY(clutter_.init(p));
     reduction_.prune_threshold = p.prune_threshold;
     reduction_.merge_threshold = p.merge_threshold;
@@ -116,7 +117,7 @@ class PhdFilter {
     counters_.clutter_deleted = clutter_.deleted();
     counters_.clutter_cap_hits = clutter_.cap_hits();
     counters_.track_cap_hits +=
-        reduce_mixture(work_, components_, reduction_, scratch_, counters_.numerical_repairs);
+        rfs::reduce_mixture(work_, components_, reduction_, scratch_, counters_.numerical_repairs);
     make_births();
     extract(scan.time_us);
     ++scan_index_;
@@ -141,7 +142,7 @@ class PhdFilter {
     return s;
   }
   const Cardinality<T, kMaxCardinality>& cardinality() const { return cardinality_; }
-  const ClutterEstimator<T, kMaxMeasurements, Caps::kMaxClutterComponents>& clutter() const {
+  const rfs::ClutterEstimator<T, kMaxMeasurements, Caps::kMaxClutterComponents>& clutter() const {
     return clutter_;
   }
 
@@ -152,12 +153,12 @@ class PhdFilter {
     for (const Component& c : components_) {
       Component p = c;
       p.weight *= params_.survival_prob;
-      predict_component(p, params_, dt);
+      rfs::predict_component(p, params_, dt);
       (void)predicted_.push_back(p);  // kMaxComponents <= kMaxPredicted
     }
     for (const Component& b : births_) {
       Component p = b;
-      predict_component(p, params_, dt);
+      rfs::predict_component(p, params_, dt);
       birth_mass += p.weight;
       if (predicted_.push_back(p) != Status::kOk) ++counters_.track_cap_hits;
     }
@@ -183,7 +184,7 @@ class PhdFilter {
     T W = T(0);
     T missed = T(0);
     for (std::size_t j = 0; j < J; ++j) {
-      if (linearize_component(predicted_[j], model_, params_, lin_[j])) ++counters_.numerical_repairs;
+      if (rfs::linearize_component(predicted_[j], model_, params_, lin_[j])) ++counters_.numerical_repairs;
       W += predicted_[j].weight;
       missed += predicted_[j].weight * (T(1) - lin_[j].pd);
     }
@@ -191,12 +192,12 @@ class PhdFilter {
     for (std::size_t i = 0; i < M; ++i) {
       log_target_sum_[i] = Cardinality<T, kMaxCardinality>::kLogZero;
       if (!batch_.valid[i]) continue;
-      LogSum<T> s;
-      Vec2<T> v;
+      rfs::LogSum<T> s;
+      rfs::Vec2<T> v;
       T lq = T(0);
       for (std::size_t j = 0; j < J; ++j) {
         if (!(predicted_[j].weight > T(0))) continue;
-        if (!log_detection_likelihood(predicted_[j], lin_[j], batch_, i, model_, params_, gate_, v, lq)) continue;
+        if (!rfs::log_detection_likelihood(predicted_[j], lin_[j], batch_, i, model_, params_, gate_, v, lq)) continue;
         s.add(dmath::dlog(predicted_[j].weight) + lq);
       }
       if (s.any) log_target_sum_[i] = s.value();
@@ -208,7 +209,7 @@ class PhdFilter {
     if (!Cardinalized || !(W > T(0))) {
       for (std::size_t i = 0; i < M; ++i) {
         if (!batch_.valid[i]) continue;
-        log_detect_factor_[i] = -log_add(clutter_.log_intensity(i), log_target_sum_[i]);
+        log_detect_factor_[i] = -rfs::log_add(clutter_.log_intensity(i), log_target_sum_[i]);
       }
     } else {
       cphd_factors(W, missed, log_missed_factor);
@@ -226,12 +227,12 @@ class PhdFilter {
       clutter_prob_[i] = T(0);
       if (!batch_.valid[i]) continue;
       if (log_target_sum_[i] > Cardinality<T, kMaxCardinality>::kLogZero) {
-        Vec2<T> v;
+        rfs::Vec2<T> v;
         T lq = T(0);
         for (std::size_t j = 0; j < J; ++j) {
           if (!(predicted_[j].weight > T(0))) continue;
-          if (!log_detection_likelihood(predicted_[j], lin_[j], batch_, i, model_, params_, gate_, v, lq)) continue;
-          Component u = updated_component(predicted_[j], lin_[j], batch_, i, v, params_);
+          if (!rfs::log_detection_likelihood(predicted_[j], lin_[j], batch_, i, model_, params_, gate_, v, lq)) continue;
+          Component u = rfs::updated_component(predicted_[j], lin_[j], batch_, i, v, params_);
           u.weight = dmath::dexp(dmath::dlog(predicted_[j].weight) + lq + log_detect_factor_[i]);
           target_prob_[i] += u.weight;
           push_work(u);
@@ -259,7 +260,7 @@ class PhdFilter {
 
   void cphd_factors(T W, T missed, T& log_missed_factor) {
     const T log_w = dmath::dlog(W);
-    const T phi = clamp_probability(missed / W);
+    const T phi = rfs::clamp_probability(missed / W);
     const T log_phi = dmath::dlog(phi);
     // R'_z over the measurements with a gated component.
     std::size_t active = 0;
@@ -300,7 +301,7 @@ class PhdFilter {
       if (!batch_.valid[i]) continue;
       const T w = params_.birth_rate * clutter_prob_[i] / denom;
       if (!(w >= params_.prune_threshold)) continue;
-      if (births_.push_back(birth_component(batch_.z[i], w, next_label_, model_, params_)) != Status::kOk) {
+      if (births_.push_back(rfs::birth_component(batch_.z[i], w, next_label_, model_, params_)) != Status::kOk) {
         ++counters_.track_cap_hits;
         continue;
       }
@@ -358,8 +359,8 @@ class PhdFilter {
   }
 
   Params params_;
-  MeasurementModel<T> model_;
-  ReductionSettings<T> reduction_;
+  rfs::MeasurementModel<T> model_;
+  rfs::ReductionSettings<T> reduction_;
   T gate_ = T(0);
   bool initialized_ = false;
   ScanClock clock_;
@@ -371,9 +372,9 @@ class PhdFilter {
   StaticVector<Component, Caps::kMaxMeasurements> births_;
   StaticVector<Component, kMaxPredicted> predicted_;
   StaticVector<Component, kMaxWork> work_;
-  ReductionScratch<kMaxWork> scratch_;
-  std::array<Linearized<T>, kMaxPredicted> lin_{};
-  MeasurementBatch<T, Caps::kMaxMeasurements> batch_;
+  rfs::ReductionScratch<kMaxWork> scratch_;
+  std::array<rfs::Linearized<T>, kMaxPredicted> lin_{};
+  rfs::MeasurementBatch<T, Caps::kMaxMeasurements> batch_;
   std::array<T, Caps::kMaxMeasurements> log_target_sum_{};
   std::array<T, Caps::kMaxMeasurements> log_detect_factor_{};
   std::array<T, Caps::kMaxMeasurements> target_prob_{};
@@ -383,7 +384,7 @@ class PhdFilter {
   std::array<std::size_t, Caps::kMaxMeasurements> active_index_{};
   std::array<T, kMaxCardinality + 1> esf_{}, esf_loo_{}, la0_{}, la1_{}, la_loo_{};
   Cardinality<T, kMaxCardinality> cardinality_;
-  ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents> clutter_;
+  rfs::ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents> clutter_;
   OutputQueue outputs_;
 };
 

@@ -6,8 +6,8 @@
 //  2. greedy merge in decreasing weight order (ties: lower index first):
 //     the heaviest unused component absorbs every unused component within
 //     Mahalanobis^2 <= U under its covariance AND (with amplitude) whose IG
-//     symmetric KL to it is <= U_sigma (the bi-threshold rule, P80);
-//     kinematics are moment-matched, powers KL-projected (P83-P85), the
+//     symmetric KL to it is <= U_sigma (the bi-threshold rule, seed 001 eqs. (80)-(81));
+//     kinematics are moment-matched, powers KL-projected (seed 001 eqs. (83)-(85)), the
 //     label and measurement index are the heaviest's;
 //  3. capacity: merged components come out heaviest first, so when the
 //     output is full the rest (the lightest) are dropped, and each drop is
@@ -18,12 +18,14 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "mptrack/gnn/covariance_guard.h"
-#include "mptrack/phd/iggm.h"
-#include "mptrack/phd/measurement_model.h"
+#include "mptrack/model/inverse_gamma.h"
+#include "mptrack/model/inverse_gamma_merge.h"
+#include "mptrack/model/mahalanobis.h"
+#include "mptrack/model/spd_guard.h"
+#include "mptrack/rfs/measurement_model.h"
 #include "mptrack/static_vector.h"
 
-namespace mptrack::phd {
+namespace mptrack::rfs {
 
 /// One inverse-Gamma-Gaussian component: weight, kinematics, power.
 template <class T>
@@ -31,7 +33,7 @@ struct TargetComponent {
   T weight = T(0);                 ///< PHD mass or Bernoulli mixture weight [-]
   Vec4<T> x = Vec4<T>::Zero();     ///< [px m, vx m/s, py m, vy m/s]
   Mat4<T> P = Mat4<T>::Identity(); ///< covariance of x
-  IgPower<T> power;                ///< belief on varsigma = 1 + SNR
+  model::InverseGamma<T> power;    ///< belief on varsigma = 1 + SNR
   std::uint32_t label = 0;         ///< display label (birth order)
   std::int32_t measurement = -1;   ///< measurement of the last update, -1 = missed
 };
@@ -80,9 +82,9 @@ std::size_t reduce_mixture(const StaticVector<TargetComponent<T>, NIn>& in,
       bool member = j == h;
       if (!member) {
         const Vec4<T> d = in[j].x - head.x;
-        Vec4<T> y;
-        if (cholesky_solve4(head.P, d, y) && d.dot(y) <= s.merge_threshold) {
-          member = !s.use_power || ig_symmetric_kl(in[j].power, head.power) <= s.merge_threshold_power;
+        T d2 = T(0);
+        if (model::mahalanobis_n<T, 4>(d, head.P, d2) && d2 <= s.merge_threshold) {
+          member = !s.use_power || model::ig_symmetric_kl(in[j].power, head.power) <= s.merge_threshold_power;
         }
       }
       if (!member) continue;
@@ -95,7 +97,7 @@ std::size_t reduce_mixture(const StaticVector<TargetComponent<T>, NIn>& in,
     m.weight = w;
     m.x = xs / w;
     Mat4<T> P = Mat4<T>::Zero();
-    IgMergeAccumulator<T> acc;
+    model::IgMergeAccumulator<T> acc;
     for (std::size_t j = 0; j < n; ++j) {
       if (!scratch.member[j]) continue;
       scratch.member[j] = false;
@@ -104,11 +106,11 @@ std::size_t reduce_mixture(const StaticVector<TargetComponent<T>, NIn>& in,
       acc.add(in[j].weight, in[j].power);
     }
     m.P = P / w;
-    if (keep_spd(m.P, s.min_variance)) ++repairs;
+    if (model::keep_spd(m.P, s.min_variance)) ++repairs;
     if (s.use_power) m.power = acc.result(s.max_alpha);
     if (out.push_back(m) != Status::kOk) ++dropped;
   }
   return dropped;
 }
 
-}  // namespace mptrack::phd
+}  // namespace mptrack::rfs

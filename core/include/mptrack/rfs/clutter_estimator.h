@@ -25,13 +25,15 @@
 #include <cstdint>
 
 #include "mptrack/math/detmath.h"
-#include "mptrack/phd/iggm.h"
-#include "mptrack/phd/measurement_model.h"
-#include "mptrack/phd/phd_params.h"
+#include "mptrack/model/amplitude_iggm.h"
+#include "mptrack/model/inverse_gamma.h"
+#include "mptrack/rfs/log_sum.h"
+#include "mptrack/rfs/measurement_model.h"
+#include "mptrack/rfs/rfs_params.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/track_report.h"
 
-namespace mptrack::phd {
+namespace mptrack::rfs {
 
 template <class T, std::size_t MaxMeasurements, std::size_t MaxSources>
 class ClutterEstimator {
@@ -42,7 +44,7 @@ class ClutterEstimator {
     bool uniform = false;
     T rate_shape = T(0);   ///< Gamma shape s: rate estimate s / t [1/scan]
     T rate_scans = T(1);   ///< Gamma rate t [scans]
-    IgPower<T> power;      ///< Weibull scale sigma0 [-]
+    model::InverseGamma<T> power;     ///< Weibull scale sigma0 [-]
     T m0 = T(0);           ///< forgetting moments of the assigned measurements
     Vec2<T> m1 = Vec2<T>::Zero();
     Mat2<T> m2 = Mat2<T>::Zero();
@@ -64,8 +66,8 @@ class ClutterEstimator {
     u.uniform = true;
     u.rate_shape = p.clutter_rate;
     u.rate_scans = T(1);
-    u.power.alpha = p.clutter_alpha_prior;
-    u.power.beta = p.clutter_scale * (p.clutter_alpha_prior - T(1));
+    u.power.a = p.clutter_alpha_prior;
+    u.power.b = p.clutter_scale * (p.clutter_alpha_prior - T(1));
     MPTRACK_TRY(sources_.push_back(u));
     next_id_ = 1;
     born_ = deleted_ = cap_hits_ = 0;
@@ -79,7 +81,7 @@ class ClutterEstimator {
     for (Source& s : sources_) {
       s.rate_shape /= v;
       s.rate_scans /= v;
-      ig_forget(s.power, params_.power_forgetting, params_.min_alpha);
+      model::forget_clamped(s.power, params_.power_forgetting, params_.min_alpha);
       s.m0 /= v;
       s.m1 /= v;
       s.m2 /= v;
@@ -88,7 +90,7 @@ class ClutterEstimator {
 
   /// ln kappa_c(z_i, a_i) for every source and their total, for the
   /// measurements flagged valid.
-  void evaluate(const Vec2<T>* z, const AmplitudeTerms<T>* amp, const bool* valid, std::size_t n) {
+  void evaluate(const Vec2<T>* z, const model::AmplitudeTerms<T>* amp, const bool* valid, std::size_t n) {
     n_ = n;
     const bool use_amp = params_.use_amplitude;
     for (std::size_t i = 0; i < n; ++i) {
@@ -105,8 +107,8 @@ class ClutterEstimator {
         }
         if (use_amp) {
           l += params_.clutter_mode == ClutterMode::kKnownUniform
-                   ? log_clutter_amplitude_known(params_.clutter_scale, amp[i])
-                   : log_clutter_amplitude(s.power, amp[i]);
+                   ? model::log_clutter_amplitude_known(params_.clutter_scale, amp[i])
+                   : model::log_clutter_amplitude(s.power, amp[i]);
         }
         log_source_[i][c] = l;
         total.add(l);
@@ -127,7 +129,7 @@ class ClutterEstimator {
 
   /// Conjugate updates from clutter_prob[i] = P(measurement i is clutter),
   /// then hot-spot seeding, deletion and merging (map mode only).
-  void update(const Vec2<T>* z, const AmplitudeTerms<T>* amp, const bool* valid,
+  void update(const Vec2<T>* z, const model::AmplitudeTerms<T>* amp, const bool* valid,
               const T* clutter_prob) {
     if (params_.clutter_mode == ClutterMode::kKnownUniform) return;
     const bool use_amp = params_.use_amplitude;
@@ -149,8 +151,8 @@ class ClutterEstimator {
       s.rate_shape += sum_r;
       s.rate_scans += T(1);
       if (use_amp) {
-        s.power.alpha += sum_r;
-        s.power.beta += sum_re;
+        s.power.a += sum_r;
+        s.power.b += sum_re;
       }
       s.m0 += sum_r;
       s.m1 += s1;
@@ -232,7 +234,7 @@ class ClutterEstimator {
   // Greedy box seeding over the measurements uniform clutter explains
   // (share > 0.5): the box with the most such points first, ties to the
   // lowest index; members are used once.
-  void seed_hotspots(const Vec2<T>* z, const AmplitudeTerms<T>* amp, const bool* valid) {
+  void seed_hotspots(const Vec2<T>* z, const model::AmplitudeTerms<T>* amp, const bool* valid) {
     const T hw0 = params_.hotspot_half_width0;
     const T hw1 = params_.hotspot_half_width1;
     const T box_volume = T(4) * hw0 * hw1;
@@ -275,8 +277,8 @@ class ClutterEstimator {
       s.id = next_id_++;
       s.rate_shape = s.m0;
       s.rate_scans = T(1);
-      s.power.alpha = T(1) + s.m0;
-      s.power.beta = sum_e > T(0) ? sum_e : params_.clutter_scale * s.m0;
+      s.power.a = T(1) + s.m0;
+      s.power.b = sum_e > T(0) ? sum_e : params_.clutter_scale * s.m0;
       if (!params_.use_amplitude) s.power = sources_[0].power;
       s.mean = s.m1 / s.m0;
       set_cov(s, s.m2 / s.m0 - s.mean * s.mean.transpose());
@@ -307,4 +309,4 @@ class ClutterEstimator {
   std::uint64_t born_ = 0, deleted_ = 0, cap_hits_ = 0;
 };
 
-}  // namespace mptrack::phd
+}  // namespace mptrack::rfs

@@ -16,16 +16,20 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "mptrack/gnn/covariance_guard.h"
-#include "mptrack/gnn/cv_model.h"
 #include "mptrack/measurement.h"
-#include "mptrack/phd/iggm.h"
-#include "mptrack/phd/measurement_model.h"
-#include "mptrack/phd/mixture.h"
-#include "mptrack/phd/phd_params.h"
+#include "mptrack/model/amplitude_iggm.h"
+#include "mptrack/model/cv_motion.h"
+#include "mptrack/model/inverse_gamma.h"
+#include "mptrack/model/measurement_validator.h"
+#include "mptrack/model/spd_guard.h"
+#include "mptrack/rfs/measurement_model.h"
+#include "mptrack/rfs/mixture.h"
+#include "mptrack/rfs/rfs_params.h"
 #include "mptrack/validate.h"
 
-namespace mptrack::phd {
+namespace mptrack::rfs {
+
+using model::AmplitudeTerms;
 
 /// One scan's measurements as the filters use them.
 template <class T, std::size_t MaxMeasurements>
@@ -37,36 +41,34 @@ struct MeasurementBatch {
   std::array<AmplitudeTerms<T>, MaxMeasurements> amp{};
   std::array<bool, MaxMeasurements> valid{};
 
-  /// Converts and checks: finite, inside the region, amplitude >= d when
-  /// amplitude is used, and amplitude <= p.max_amplitude with its clutter
-  /// term a^(2b) <= FilterParams::kMaxAmplitudeTerm (docs/reliability.md
-  /// F4: larger values overflow the amplitude moments). Exact duplicates
-  /// of a valid earlier measurement are flagged too and counted in
-  /// `duplicate` (measurement.h, F11). Invalid ones stay in place (flag
-  /// false) so measurement indices keep their meaning.
+  /// Converts and checks with p.validator() (model/measurement_validator.h:
+  /// finite, inside the region, amplitude > d and <= p.max_amplitude when
+  /// amplitude is used, > 0 otherwise), and the clutter term a^(2b) <=
+  /// FilterParams::kMaxAmplitudeTerm (docs/reliability.md F4: larger values
+  /// overflow the amplitude moments). Exact duplicates of a valid earlier
+  /// measurement are flagged too and counted in `duplicate` (measurement.h,
+  /// F11). Invalid ones stay in place (flag false) so measurement indices
+  /// keep their meaning.
   template <std::size_t N>
   void load(const Scan<T, N>& scan, const FilterParams<T>& p, const MeasurementModel<T>& mm) {
     static_assert(N <= MaxMeasurements, "batch smaller than the scan");
     n = scan.measurements.size();
     invalid = 0;
     duplicate = 0;
+    const model::MeasurementValidator<T> check = p.validator();
     for (std::size_t i = 0; i < n; ++i) {
       const Measurement<T>& y = scan.measurements[i];
-      bool ok = is_finite(y.range_m) && is_finite(y.azimuth_rad) && is_finite(y.amplitude) &&
-                y.amplitude > T(0);
-      if (ok && p.use_amplitude && y.amplitude < p.threshold) ok = false;
-      if (ok && p.use_amplitude && y.amplitude > p.max_amplitude) ok = false;
+      bool ok = check.values_valid(y);
       if (ok) {
         z[i] = mm.vector_of(y);
-        ok = z[i](0) >= p.region_min0 && z[i](0) <= p.region_max0 && z[i](1) >= p.region_min1 &&
-             z[i](1) <= p.region_max1;
+        ok = check.inside(z[i](0), z[i](1));
       }
       valid[i] = ok;
       if (!ok) {
         ++invalid;
         continue;
       }
-      amp[i] = p.use_amplitude ? amplitude_terms(y.amplitude, p.threshold, p.weibull_shape)
+      amp[i] = p.use_amplitude ? model::amplitude_terms(y.amplitude, p.threshold, p.weibull_shape)
                                : AmplitudeTerms<T>{};
       if (p.use_amplitude && !(amp[i].clutter_excess <= FilterParams<T>::kMaxAmplitudeTerm)) {
         valid[i] = false;  // a^(2b) too large for this Weibull shape b
@@ -108,9 +110,9 @@ bool linearize_component(const TargetComponent<T>& c, const MeasurementModel<T>&
   mm.linearize(c.x, out.z_hat, H);
   const Eigen::Matrix<T, 4, 2> PHt = c.P * H.transpose();
   Mat2<T> S = H * PHt + mm.R;
-  symmetrize(S);
+  model::symmetrize(S);
   out.ok = invert_spd2(S, out.S_inv, out.log_det);
-  const T pd = p.use_amplitude ? target_detection_probability(c.power, p.threshold, p.swerling_order)
+  const T pd = p.use_amplitude ? model::target_detection_probability(c.power, p.threshold, p.swerling_order)
                                : p.detection_prob;
   out.pd = clamp_probability(pd);
   out.log_pd = dmath::dlog(out.pd);
@@ -118,7 +120,7 @@ bool linearize_component(const TargetComponent<T>& c, const MeasurementModel<T>&
   out.K = PHt * out.S_inv;
   const Mat4<T> IKH = Mat4<T>::Identity() - out.K * H;
   out.P_post = IKH * c.P * IKH.transpose() + out.K * mm.R * out.K.transpose();
-  return keep_spd(out.P_post, T(1e-9));
+  return model::keep_spd(out.P_post, T(1e-9));
 }
 
 /// ln(P_D g_z g_a) of component c for measurement i, or false if outside
@@ -132,7 +134,7 @@ bool log_detection_likelihood(const TargetComponent<T>& c, const Linearized<T>& 
   v = mm.residual(batch.z[i], lin.z_hat);
   if (mahalanobis2(v, lin.S_inv) > gate) return false;
   log_q = lin.log_pd + log_gauss2(v, lin.S_inv, lin.log_det);
-  if (p.use_amplitude) log_q += log_target_amplitude(c.power, batch.amp[i], p.swerling_order);
+  if (p.use_amplitude) log_q += model::log_target_amplitude(c.power, batch.amp[i], p.swerling_order);
   return true;
 }
 
@@ -144,7 +146,7 @@ TargetComponent<T> updated_component(const TargetComponent<T>& c, const Lineariz
   TargetComponent<T> u = c;
   u.x = c.x + lin.K * v;
   u.P = lin.P_post;
-  if (p.use_amplitude) ig_update_target(u.power, batch.amp[i], p.swerling_order);
+  if (p.use_amplitude) model::ig_update_target(u.power, batch.amp[i], p.swerling_order);
   u.measurement = static_cast<std::int32_t>(i);
   return u;
 }
@@ -152,8 +154,8 @@ TargetComponent<T> updated_component(const TargetComponent<T>& c, const Lineariz
 /// Prediction of one component over dt [s]: CV kinematics, power forgetting.
 template <class T>
 void predict_component(TargetComponent<T>& c, const FilterParams<T>& p, T dt) {
-  cv_predict(c.x, c.P, dt, p.accel_std_mps2);
-  if (p.use_amplitude) ig_forget(c.power, p.power_forgetting, p.min_alpha);
+  model::cv_predict(c.x, c.P, dt, p.accel_std_mps2 * p.accel_std_mps2);
+  if (p.use_amplitude) model::forget_clamped(c.power, p.power_forgetting, p.min_alpha);
   c.measurement = -1;
 }
 
@@ -175,8 +177,8 @@ TargetComponent<T> birth_component(const Vec2<T>& z, T weight, std::uint32_t lab
   const T vv = p.birth_velocity_std_mps * p.birth_velocity_std_mps;
   b.P(1, 1) = vv;
   b.P(3, 3) = vv;
-  b.power.alpha = p.target_alpha_prior;
-  b.power.beta = p.target_power_prior * (p.target_alpha_prior - T(1));
+  b.power.a = p.target_alpha_prior;
+  b.power.b = p.target_power_prior * (p.target_alpha_prior - T(1));
   b.label = label;
   b.measurement = -1;
   return b;
@@ -188,4 +190,4 @@ T chi2_gate_2dof(T p) {
   return T(-2) * dmath::dlog(T(1) - p);
 }
 
-}  // namespace mptrack::phd
+}  // namespace mptrack::rfs
