@@ -89,7 +89,7 @@ struct TrackSlot {
   /// Fresh track (the caller sets its birth state): no association on any
   /// window scan, the birth visibility as extrinsic message.
   void start(std::uint32_t track_id, std::size_t first_scan, T visibility_at_birth) {
-    *this = TrackSlot{};
+    reset();
     alive = true;
     id = track_id;
     first = first_scan;
@@ -124,6 +124,48 @@ struct TrackSlot {
   }
 
  private:
+  /// The state of a fresh slot, set in place: `*this = TrackSlot{}` builds
+  /// a temporary of the slot's size (kilobytes) on the stack of step().
+  /// Keep in step with the members above.
+  void reset() {
+    alive = false;
+    confirmed = false;
+    from_birth = false;
+    id = 0;
+    first = 0;
+    low_run = 0;
+    age = 0;
+    x0 = Vec4::Zero();
+    P0 = Mat4::Identity();
+    ig0 = IG{};
+    vis0 = T(0.5);
+    bias0 = Vec2::Zero();
+    vis_emitted = T(1);
+    t0_us = 0;
+    for (std::size_t k = 0; k < kMaxWindow; ++k) {
+      xf[k] = Vec4::Zero();
+      xs[k] = Vec4::Zero();
+      Pf[k] = PackedCov4<T>{};
+      Ps[k] = PackedCov4<T>{};
+      igf[k] = IG{};
+      igs[k] = IG{};
+      amp[k] = AmpStats{};
+      xi1[k] = T(0);
+      xi0[k] = T(0);
+      visf[k] = T(0);
+      vis[k] = T(0);
+      extr[k] = T(0);
+      missed[k] = T(0);
+      n_edges[k] = 0;
+      edge_meas[k].fill(0);
+      edge_w[k].fill(T(0));
+      best[k] = 0;
+      biasf[k] = Vec2::Zero();
+      qk[k] = T(0);
+      mate[k] = 0;
+    }
+  }
+
   void move_scan(std::size_t k, std::size_t d) {
     xf[d] = xf[k];
     xs[d] = xs[k];
