@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
 #include "mptrack/mfbp/amplitude_model.h"
 #include "mptrack/mfbp/cavity.h"
@@ -89,7 +90,7 @@ void known_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, const ClutterSou
     bp.set_clutter_absent(q, T(0));  // known components are always present
     if (!(comp.rate_per_scan > T(0))) continue;
     const T det = comp.covariance(0, 0) * comp.covariance(1, 1) - comp.covariance(0, 1) * comp.covariance(1, 0);
-    const T base = dmath::dlog(comp.rate_per_scan) - T(1.8378770664093453) - T(0.5) * dmath::dlog(det) +
+    const T base = dmath::dlog(comp.rate_per_scan) - dmath::kLnTwoPi<T> - T(0.5) * dmath::dlog(det) +
                    log_dop_clutter;
     Mat2<T> inv;  // closed-form 2x2 inverse
     inv << comp.covariance(1, 1) / det, -comp.covariance(0, 1) / det, -comp.covariance(1, 0) / det,
@@ -325,7 +326,7 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
       // would never let it learn.
       const T ed = s.dop[j] - mo.z_dop;
       const T var = var_d + mo.var_dop;
-      v += -T(0.5) * (T(1.8378770664093453) + dmath::dlog(var)) - T(0.5) * ed * ed / var;
+      v += -T(0.5) * (dmath::kLnTwoPi<T> + dmath::dlog(var)) - T(0.5) * ed * ed / var;
     }
     if (p.use_amplitude) {
       v += expected_amplitude_loglik(s.amp[j], p.amplitude_threshold, t.igs[k].a, t.igs[k].b,

@@ -39,7 +39,7 @@ struct ModelConstants {
     R_inv.setZero();
     R_inv(0, 0) = T(1) / R(0, 0);
     R_inv(1, 1) = T(1) / R(1, 1);
-    log_norm_R = -T(1.8378770664093453) - T(0.5) * dmath::dlog(R(0, 0) * R(1, 1));
+    log_norm_R = -dmath::kLnTwoPi<T> - T(0.5) * dmath::dlog(R(0, 0) * R(1, 1));
   }
 };
 
