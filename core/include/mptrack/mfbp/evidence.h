@@ -89,15 +89,13 @@ void known_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, const ClutterSou
     const auto& comp = kc.components[src.slot[q] - 1];
     bp.set_clutter_absent(q, T(0));  // known components are always present
     if (!(comp.rate_per_scan > T(0))) continue;
-    const T det = comp.covariance(0, 0) * comp.covariance(1, 1) - comp.covariance(0, 1) * comp.covariance(1, 0);
-    const T base = dmath::dlog(comp.rate_per_scan) - dmath::kLnTwoPi<T> - T(0.5) * dmath::dlog(det) +
+    const model::Mahalanobis2<T> dist(comp.covariance);
+    if (!dist.valid()) continue;  // validate() refuses such maps already
+    const T base = dmath::dlog(comp.rate_per_scan) - dmath::kLnTwoPi<T> - T(0.5) * dmath::dlog(dist.det()) +
                    log_dop_clutter;
-    Mat2<T> inv;  // closed-form 2x2 inverse
-    inv << comp.covariance(1, 1) / det, -comp.covariance(0, 1) / det, -comp.covariance(1, 0) / det,
-        comp.covariance(0, 0) / det;
     for (std::size_t j = 0; j < s.count; ++j) {
-      Vec2<T> e(s.r[j] - comp.mean(0), wrap_angle(s.az[j] - comp.mean(1)));
-      const T maha = e.dot(inv * e);
+      const Vec2<T> e(s.r[j] - comp.mean(0), wrap_angle(s.az[j] - comp.mean(1)));
+      const T maha = dist.distance2(e);
       if (maha > p.clutter_gate_chi2) continue;
       T v = base - T(0.5) * maha;
       if (p.use_amplitude) v += amplitude_loglik(s.amp[j], d, T(1) + comp.cnr, mc.n_order);
