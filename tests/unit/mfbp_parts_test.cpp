@@ -213,24 +213,23 @@ TEST_CASE("mfbp caps accessors: members read when present, defaults otherwise") 
   CHECK(mfbp::kMaxBirthCandidates<DefaultCaps> == DefaultCaps::kMaxBirthCandidates);
 }
 
-TEST_CASE("mfbp init refuses birth_max_per_window above Caps::kMaxBirthCandidates") {
-  auto trk = std::make_unique<MfbpTracker<double, Caps5Small>>();
-  MfbpParams<double> p = seed000_default_params<double>();
+// init() with the smallest window and n births per window.
+template <class T, class Caps>
+Status init_with_births(std::size_t n) {
+  auto trk = std::make_unique<MfbpTracker<T, Caps>>();
+  MfbpParams<T> p = seed000_default_params<T>();
   p.window_length = 1;
   p.slide = 1;
-  p.birth_max_per_window = 5;
-  CHECK(trk->init(p) == Status::kInvalidArgument);
-  p.birth_max_per_window = 4;
-  CHECK(trk->init(p) == Status::kOk);
+  p.birth_max_per_window = n;
+  return trk->init(p);
 }
 
-TEST_CASE("mfbp init: the default caps accept birth_max_per_window up to 32, not 33") {
-  auto trk = std::make_unique<MfbpTracker<float, SmallBoardCaps>>();
-  MfbpParams<float> p = seed000_default_params<float>();
-  p.window_length = 1;
-  p.slide = 1;
-  p.birth_max_per_window = 33;
-  CHECK(trk->init(p) == Status::kInvalidArgument);
-  p.birth_max_per_window = 32;
-  CHECK(trk->init(p) == Status::kOk);
+TEST_CASE("mfbp init refuses birth_max_per_window above Caps::kMaxBirthCandidates") {
+  CHECK(init_with_births<double, Caps5Small>(5) == Status::kInvalidArgument);
+  CHECK(init_with_births<double, Caps5Small>(4) == Status::kOk);
+}
+
+TEST_CASE("mfbp init: the preset caps accept birth_max_per_window up to 32, not 33") {
+  CHECK(init_with_births<float, SmallBoardCaps>(33) == Status::kInvalidArgument);
+  CHECK(init_with_births<float, SmallBoardCaps>(32) == Status::kOk);
 }
