@@ -7,8 +7,9 @@
 // shares of each measurement and the clutter statistics per source
 // (eqs. (54)-(55), (62), (69)).
 //
-// The Associator owns the BP and the per-scan moments scratch, and counts
-// BP runs, iterations and gated pairs dropped by the kMaxGatePairs cap.
+// The Associator owns the BP and the per-scan moments scratch; it counts
+// BP runs, iterations and gated pairs dropped by the kMaxGatePairs cap in
+// the caller's AssociationStats.
 #pragma once
 
 #include <array>
@@ -29,6 +30,14 @@
 
 namespace mptrack::mfbp {
 
+/// Association diagnostics since init() (the tracker keeps them next to its
+/// counters; an 8-byte member here would pad the tracker on 32-bit targets).
+struct AssociationStats {
+  std::uint64_t gate_overflows = 0;  ///< gated pairs dropped by the kMaxGatePairs cap
+  std::uint64_t bp_runs = 0;
+  std::uint64_t bp_iterations = 0;
+};
+
 template <class T, class Caps>
 class Associator {
  public:
@@ -46,7 +55,7 @@ class Associator {
   /// change of any stored association belief (the outer loop's test).
   T associate(std::size_t k, WindowStore<T, Caps>& store, Tracks& tracks,
               const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p, const ModelConstants<T>& mc,
-              TrackerCounters& counters, bool& cap_hit) {
+              TrackerCounters& counters, AssociationStats& stats, bool& cap_hit) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kEvidence);
     Scan& s = store.win(k);
     const Sources src = clutter_sources(cl, p);
@@ -63,13 +72,13 @@ class Associator {
     }
     compute_moments(k, s, tracks, p, mc, counters);
     TrackList bp_track{};
-    const std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, cap_hit);
+    const std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, stats, cap_hit);
 
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBp);
     const auto res = bp_.run(p.bp_damping, p.bp_tolerance, p.bp_max_iterations);
     if (!res.converged) ++counters.bp_not_converged;
-    bp_iterations_ += res.iterations;
-    ++bp_runs_;
+    stats.bp_iterations += res.iterations;
+    ++stats.bp_runs;
     for (auto& t : tracks) {
       if (t.alive && k >= t.first && !t.participates(k)) t.forget_association(k);
     }
@@ -80,15 +89,6 @@ class Associator {
     s.has_beliefs = true;
     return delta;
   }
-
-  void reset_diagnostics() {
-    gate_overflows_ = 0;
-    bp_runs_ = 0;
-    bp_iterations_ = 0;
-  }
-  std::uint64_t gate_overflows() const { return gate_overflows_; }
-  std::uint64_t bp_runs() const { return bp_runs_; }
-  std::uint64_t bp_iterations() const { return bp_iterations_; }
 
  private:
   static void track_delta(T a, T b, T& delta) {
@@ -117,7 +117,8 @@ class Associator {
 
   /// Gated target evidence into the BP; bp_track[b] = the track of BP target b.
   std::size_t add_targets(std::size_t k, const Scan& s, const Tracks& tracks, const MfbpParams<T>& p,
-                          const ModelConstants<T>& mc, TrackList& bp_track, bool& cap_hit) {
+                          const ModelConstants<T>& mc, TrackList& bp_track, AssociationStats& stats,
+                          bool& cap_hit) {
     std::size_t nbt = 0;
     for (std::size_t i = 0; i < kMaxTargets; ++i) {
       const TrackSlot<T, Caps>& t = tracks[i];
@@ -130,7 +131,7 @@ class Associator {
       GateList<T, kMaxGate> list;
       const std::size_t dropped = target_evidence(t, mo, gate, s, k, p, mc, list);
       if (dropped > 0) {
-        gate_overflows_ += dropped;
+        stats.gate_overflows += dropped;
         cap_hit = true;
       }
       if (bp_.add_target(theta0) != Status::kOk) continue;
@@ -224,9 +225,6 @@ class Associator {
 
   std::array<TrackMoments<T>, kMaxTargets> moments_{};
   Bp bp_{};
-  std::uint64_t gate_overflows_ = 0;
-  std::uint64_t bp_runs_ = 0;
-  std::uint64_t bp_iterations_ = 0;
 };
 
 }  // namespace mptrack::mfbp

@@ -36,9 +36,11 @@
 // association evidence (predictive density for targets, uniform on
 // [-span, span] for clutter).
 //
-// Memory (sizeof, x86-64): float/SmallBoardCaps 53 568 B, float/DefaultCaps
-// 303 792 B, double/DefaultCaps 559 760 B. The largest parts: per-track
-// window beliefs, the stored scans, the BP messages and the output queue.
+// Memory (sizeof as built, EIGEN_DONT_VECTORIZE): x86-64 float/SmallBoardCaps
+// 51 336 B, float/DefaultCaps 293 536 B, double/DefaultCaps 546 768 B;
+// Cortex-M7 float 51 176 B and 293 320 B (bench/footprint.json). The largest
+// parts: per-track window beliefs, the stored scans, the BP messages and the
+// output queue.
 //
 // Overflow policies (all counted, none silent):
 //   * measurements: a Scan cannot exceed Caps::kMaxMeasurements, so no
@@ -118,7 +120,7 @@ class MfbpTracker {
     next_track_id_ = 1;
     next_comp_id_ = 1;
     finalized_ = 0;
-    associator_.reset_diagnostics();
+    assoc_stats_ = mfbp::AssociationStats{};
     clock_.reset();
     clock_.set_max_gap_s(params_.max_gap_s);
     // Clutter priors at "scan -1".
@@ -180,10 +182,10 @@ class MfbpTracker {
   const OutputQueue& outputs() const { return outputs_; }
   const TrackerCounters& counters() const { return counters_; }
   /// Gated (track, measurement) pairs dropped by the kMaxGatePairs cap.
-  std::uint64_t gate_overflows() const { return associator_.gate_overflows(); }
+  std::uint64_t gate_overflows() const { return assoc_stats_.gate_overflows; }
   /// Loopy-BP runs and their total iterations since init() (diagnostics).
-  std::uint64_t bp_runs() const { return associator_.bp_runs(); }
-  std::uint64_t bp_iterations() const { return associator_.bp_iterations(); }
+  std::uint64_t bp_runs() const { return assoc_stats_.bp_runs; }
+  std::uint64_t bp_iterations() const { return assoc_stats_.bp_iterations; }
   const Params& params() const { return params_; }
   /// Live tracks (tentative and confirmed) right now.
   std::size_t live_tracks() const { return tracks_.live(); }
@@ -220,7 +222,7 @@ class MfbpTracker {
       T delta = T(0);
       for (std::size_t k = 0; k < n; ++k) {
         const T d = associator_.associate(k, store_, tracks_, clutter_, params_, model_, counters_,
-                                          step_cap_hit_);
+                                          assoc_stats_, step_cap_hit_);
         delta = d > delta ? d : delta;
       }
       mf_sweep(n);
@@ -305,6 +307,7 @@ class MfbpTracker {
 
   OutputQueue outputs_{};
   TrackerCounters counters_{};
+  mfbp::AssociationStats assoc_stats_{};
   std::uint32_t next_track_id_ = 1;
   std::uint32_t next_comp_id_ = 1;
   std::uint64_t finalized_ = 0;
