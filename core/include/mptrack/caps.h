@@ -4,6 +4,9 @@
 // A caps type is any struct with the static members below. Pass it as the
 // Caps template parameter of a core component, e.g.
 //   mptrack::MfbpTracker<float, mptrack::SmallBoardCaps> tracker;  // placed in .bss
+// The MF-BP scratch capacities (kMaxGatePairs, kMaxClutterGridCells,
+// kMaxBirthCandidates) are optional: a caps type without them gets the
+// values of the presets below (mfbp/mfbp_caps.h reads them with a default).
 // Run-time tunables never live here: they are in each component's Params
 // struct (units and defaults there), validated once by init().
 #pragma once
@@ -18,6 +21,15 @@ struct DefaultCaps {
   static constexpr std::size_t kMaxMeasurements = 256;      ///< detections per scan
   static constexpr std::size_t kMaxClutterComponents = 8;   ///< non-uniform clutter components
   static constexpr std::size_t kMaxWindow = 7;              ///< smoothing window length K (scans)
+  /// MF-BP: gated measurements kept per track and scan (the most likely
+  /// ones; the rest are dropped and counted in gate_overflows()).
+  static constexpr std::size_t kMaxGatePairs = 8;
+  /// MF-BP: cells of the clutter-seeding grid (the grid is coarsened until
+  /// the region fits).
+  static constexpr std::size_t kMaxClutterGridCells = 512;
+  /// MF-BP: two-point birth candidates ranked per window; the params field
+  /// birth_max_per_window must not exceed it (init() refuses).
+  static constexpr std::size_t kMaxBirthCandidates = 32;
 };
 
 /// Small board: fits a 64 KiB RAM budget (see README, footprint report).
@@ -31,6 +43,9 @@ struct SmallBoardCaps {
   static constexpr std::size_t kMaxMeasurements = 64;
   static constexpr std::size_t kMaxClutterComponents = 4;
   static constexpr std::size_t kMaxWindow = 4;
+  static constexpr std::size_t kMaxGatePairs = 8;
+  static constexpr std::size_t kMaxClutterGridCells = 512;
+  static constexpr std::size_t kMaxBirthCandidates = 32;
 };
 
 /// Large: Cortex-A class cores with MiBs of RAM.
@@ -39,6 +54,9 @@ struct LargeCaps {
   static constexpr std::size_t kMaxMeasurements = 1024;
   static constexpr std::size_t kMaxClutterComponents = 8;
   static constexpr std::size_t kMaxWindow = 7;
+  static constexpr std::size_t kMaxGatePairs = 8;
+  static constexpr std::size_t kMaxClutterGridCells = 512;
+  static constexpr std::size_t kMaxBirthCandidates = 32;
 };
 
 /// Compile-time validation of a caps type; every component calls it in a

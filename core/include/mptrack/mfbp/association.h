@@ -1,0 +1,230 @@
+// Data association of one window scan (seed 000 Algorithm 1 line 3): the
+// local evidence of evidence.h, loopy BP over it (eqs. (99)-(102),
+// association_bp.h), and the storage of the beliefs the MF sweeps consume:
+// per track the missed-detection belief a_i0 (the weight 1 - a_i0 of
+// eq. (40)), its edges a_ij, the amplitude statistics of eq. (43) and the
+// visibility messages of eq. (65)-(66); per scan the target and uniform
+// shares of each measurement and the clutter statistics per source
+// (eqs. (54)-(55), (62), (69)).
+//
+// The Associator owns the BP and the per-scan moments scratch; it counts
+// BP runs, iterations and gated pairs dropped by the kMaxGatePairs cap in
+// the caller's AssociationStats.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "mptrack/math/detmath.h"
+#include "mptrack/mfbp/association_bp.h"
+#include "mptrack/mfbp/clutter_slot.h"
+#include "mptrack/mfbp/evidence.h"
+#include "mptrack/mfbp/mfbp_caps.h"
+#include "mptrack/mfbp/model_constants.h"
+#include "mptrack/mfbp/track_slot.h"
+#include "mptrack/mfbp/window_store.h"
+#include "mptrack/model/mahalanobis.h"
+#include "mptrack/profile.h"
+#include "mptrack/track_report.h"
+
+namespace mptrack::mfbp {
+
+/// Association diagnostics since init() (the tracker keeps them next to its
+/// counters; an 8-byte member here would pad the tracker on 32-bit targets).
+struct AssociationStats {
+  std::uint64_t gate_overflows = 0;  ///< gated pairs dropped by the kMaxGatePairs cap
+  std::uint64_t bp_runs = 0;
+  std::uint64_t bp_iterations = 0;
+};
+
+template <class T, class Caps>
+class Associator {
+ public:
+  static constexpr std::size_t kMaxTargets = Caps::kMaxTargets;
+  static constexpr std::size_t kMaxMeas = Caps::kMaxMeasurements;
+  static constexpr std::size_t kSources = Caps::kMaxClutterComponents + 1;
+  static constexpr std::size_t kMaxGate = kMaxGatePairs<Caps>;
+  using Bp = AssociationBp<T, kMaxTargets, kMaxMeas, kSources, kMaxTargets * kMaxGate>;
+  using Tracks = TrackTable<T, Caps>;
+  using Scan = ScanSlot<T, Caps>;
+  using Sources = ClutterSources<kSources>;
+  using TrackList = std::array<std::size_t, kMaxTargets>;
+
+  /// Evidence, BP and stored beliefs of window scan k. Returns the largest
+  /// change of any stored association belief (the outer loop's test).
+  T associate(std::size_t k, WindowStore<T, Caps>& store, Tracks& tracks,
+              const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p, const ModelConstants<T>& mc,
+              TrackerCounters& counters, AssociationStats& stats, bool& cap_hit) {
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kEvidence);
+    Scan& s = store.win(k);
+    const Sources src = clutter_sources(cl, p);
+    (void)bp_.reset(s.count, src.count);
+    const T lambda = expected_clutter_count(tracks, k, s.count, p, mc.n_order);
+    s.lambda_hat = lambda;
+    // With Doppler every clutter source has a uniform radial-velocity
+    // density 1 / (2 span) (our choice, docs/algorithms/mfbp.md §Departures).
+    const T log_dop_clutter = s.doppler ? -dmath::dlog(T(2) * p.doppler_span_mps) : T(0);
+    if (p.clutter_mode == ClutterMode::kKnown) {
+      known_clutter_evidence(bp_, s, src, p, mc, log_dop_clutter);
+    } else {
+      estimated_clutter_evidence(bp_, s, k, src, cl, lambda, p, mc, log_dop_clutter);
+    }
+    compute_moments(k, s, tracks, p, mc, counters);
+    TrackList bp_track{};
+    const std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, stats, cap_hit);
+
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBp);
+    const auto res = bp_.run(p.bp_damping, p.bp_tolerance, p.bp_max_iterations);
+    if (!res.converged) ++counters.bp_not_converged;
+    stats.bp_iterations += res.iterations;
+    ++stats.bp_runs;
+    for (auto& t : tracks) {
+      if (t.alive && k >= t.first && !t.participates(k)) t.forget_association(k);
+    }
+    std::array<T, kMaxMeas> new_share{};
+    T delta = store_track_beliefs(k, s, tracks, p, mc, bp_track, nbt, new_share);
+    delta = store_shares(s, new_share, delta);
+    store_clutter_stats(k, s, src, cl, p);
+    s.has_beliefs = true;
+    return delta;
+  }
+
+ private:
+  static void track_delta(T a, T b, T& delta) {
+    const T dd = a > b ? a - b : b - a;
+    delta = dd > delta ? dd : delta;
+  }
+
+  /// Predicted measurement moments of every track first, so that
+  /// unresolved tracks can share them (couple_unresolved).
+  void compute_moments(std::size_t k, const Scan& s, Tracks& tracks, const MfbpParams<T>& p,
+                       const ModelConstants<T>& mc, TrackerCounters& counters) {
+    for (std::size_t i = 0; i < kMaxTargets; ++i) {
+      TrackSlot<T, Caps>& t = tracks[i];
+      TrackMoments<T>& mo = moments_[i];
+      mo.ok = false;
+      t.mate[k] = 0;
+      if (!t.participates(k)) continue;
+      mo.ok = track_moments(t, k, s, p, mc, counters, mo);
+    }
+    if (p.unresolved_chi2 > T(0)) {
+      couple_unresolved(moments_, tracks, k, p);
+    } else {
+      for (auto& mo : moments_) mo.z_shared = mo.z;
+    }
+  }
+
+  /// Gated target evidence into the BP; bp_track[b] = the track of BP target b.
+  std::size_t add_targets(std::size_t k, const Scan& s, const Tracks& tracks, const MfbpParams<T>& p,
+                          const ModelConstants<T>& mc, TrackList& bp_track, AssociationStats& stats,
+                          bool& cap_hit) {
+    std::size_t nbt = 0;
+    for (std::size_t i = 0; i < kMaxTargets; ++i) {
+      const TrackSlot<T, Caps>& t = tracks[i];
+      const TrackMoments<T>& mo = moments_[i];
+      if (!mo.ok) continue;
+      const model::Mahalanobis2<T> gate(mo.Sz + mc.R);
+      if (!gate.valid()) continue;
+      const T pd = detection_prob(p, mc.n_order, t.igs[k]);
+      const T theta0 = missed_evidence(pd, t.extr[k], p.pd_invisible);
+      GateList<T, kMaxGate> list;
+      const std::size_t dropped = target_evidence(t, mo, gate, s, k, p, mc, list);
+      if (dropped > 0) {
+        stats.gate_overflows += dropped;
+        cap_hit = true;
+      }
+      if (bp_.add_target(theta0) != Status::kOk) continue;
+      const auto order = list.measurement_order();
+      for (std::size_t a = 0; a < list.size; ++a) (void)bp_.add_edge(list.j[order[a]], list.v[order[a]]);
+      bp_track[nbt++] = i;
+    }
+    return nbt;
+  }
+
+  /// Missed and edge beliefs, amplitude statistics and visibility messages
+  /// of every track in the BP; new_share[j] += its edge beliefs.
+  T store_track_beliefs(std::size_t k, const Scan& s, Tracks& tracks, const MfbpParams<T>& p,
+                        const ModelConstants<T>& mc, const TrackList& bp_track, std::size_t nbt,
+                        std::array<T, kMaxMeas>& new_share) {
+    const T d = p.amplitude_threshold;
+    T delta = T(0);
+    for (std::size_t i = 0; i < nbt; ++i) {
+      TrackSlot<T, Caps>& t = tracks[bp_track[i]];
+      const T missed = bp_.missed_belief(i);
+      track_delta(missed, t.missed[k], delta);
+      t.missed[k] = missed;
+      std::size_t ne = 0;
+      T best_w = missed;
+      std::int32_t best_j = -1;
+      AmplitudeStats<T> as{};
+      for (std::size_t e = bp_.edge_begin(i); e < bp_.edge_end(i); ++e) {
+        const std::size_t j = bp_.edge_meas(e);
+        const T a = bp_.edge_belief(e);
+        t.edge_meas[k][ne] = static_cast<std::uint16_t>(j);
+        t.edge_w[k][ne] = a;
+        ++ne;
+        new_share[j] += a;
+        as.w += a;
+        as.s += a * (s.amp[j] * s.amp[j] - d * d);
+        if (a > best_w) {
+          best_w = a;
+          best_j = static_cast<std::int32_t>(j);
+        }
+      }
+      t.n_edges[k] = static_cast<std::uint8_t>(ne);
+      t.best[k] = best_j;
+      t.amp[k] = as;
+      store_visibility_messages(t, k, bp_.lambda(i), detection_prob(p, mc.n_order, t.igs[k]), p.pd_invisible);
+    }
+    return delta;
+  }
+
+  /// Visibility messages xi(s) from the association (eq. (65)-(66)), normalised.
+  static void store_visibility_messages(TrackSlot<T, Caps>& t, std::size_t k, T lam, T pd, T eps) {
+    T x1 = T(1) - pd + pd * lam;
+    T x0 = T(1) - eps + eps * lam;
+    const T z = x1 + x0;
+    t.xi1[k] = x1 / z;
+    t.xi0[k] = x0 / z;
+  }
+
+  /// Target and uniform-clutter shares of every measurement.
+  T store_shares(Scan& s, const std::array<T, kMaxMeas>& new_share, T delta) const {
+    for (std::size_t j = 0; j < s.count; ++j) {
+      track_delta(new_share[j], s.target_share[j], delta);
+      s.target_share[j] = new_share[j];
+      const T u = bp_.clutter_belief(0, j);
+      track_delta(u, s.uniform_share[j], delta);
+      s.uniform_share[j] = u;
+    }
+    return delta;
+  }
+
+  /// Clutter statistics per source slot for the clutter chain.
+  void store_clutter_stats(std::size_t k, Scan& s, const Sources& src, const ClutterTable<T, Caps>& cl,
+                           const MfbpParams<T>& p) const {
+    const T d = p.amplitude_threshold;
+    s.clear_source_stats();
+    for (std::size_t q = 0; q < src.count; ++q) {
+      const std::size_t slot = src.slot[q];
+      NwStats<T> st{};
+      if (slot > 0 && estimate_clutter(p)) st.ref = cl.comps[slot - 1].nws[k].mu;
+      AmplitudeStats<T> as{};
+      for (std::size_t j = 0; j < s.count; ++j) {
+        const T a = bp_.clutter_belief(q, j);
+        if (!(a > T(0))) continue;
+        if (slot > 0) st.add(Vec2<T>(s.r[j], s.az[j]), a);
+        as.w += a;
+        as.s += a * (s.amp[j] * s.amp[j] - d * d);
+      }
+      s.nw_stats[slot] = st;
+      s.amp_stats[slot] = as;
+    }
+  }
+
+  std::array<TrackMoments<T>, kMaxTargets> moments_{};
+  Bp bp_{};
+};
+
+}  // namespace mptrack::mfbp

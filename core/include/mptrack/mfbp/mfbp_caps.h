@@ -1,0 +1,76 @@
+// The MF-BP capacities read from a caps type (caps.h), with defaults, and the
+// check of the run-time params against them.
+//
+// MF-BP has three scratch capacities beyond the four every tracker shares:
+// the gated pairs kept per track and scan (the sparse association of
+// seed 000 eqs. (99)-(102) runs on them), the clutter-seeding grid and the
+// ranked two-point birth candidates (docs/algorithms/mfbp.md §Birth). A
+// user caps type written before they existed still compiles: the accessors
+// below (C++17 detection idiom) fall back to the values of the presets.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+
+#include "mptrack/mfbp/mfbp_params.h"
+#include "mptrack/status.h"
+
+namespace mptrack::mfbp {
+
+namespace detail {
+
+inline constexpr std::size_t kDefaultGatePairs = 8;
+inline constexpr std::size_t kDefaultClutterGridCells = 512;
+inline constexpr std::size_t kDefaultBirthCandidates = 32;
+
+template <class Caps, class = void>
+struct GatePairsOf : std::integral_constant<std::size_t, kDefaultGatePairs> {};
+template <class Caps>
+struct GatePairsOf<Caps, std::void_t<decltype(Caps::kMaxGatePairs)>>
+    : std::integral_constant<std::size_t, Caps::kMaxGatePairs> {};
+
+template <class Caps, class = void>
+struct ClutterGridCellsOf : std::integral_constant<std::size_t, kDefaultClutterGridCells> {};
+template <class Caps>
+struct ClutterGridCellsOf<Caps, std::void_t<decltype(Caps::kMaxClutterGridCells)>>
+    : std::integral_constant<std::size_t, Caps::kMaxClutterGridCells> {};
+
+template <class Caps, class = void>
+struct BirthCandidatesOf : std::integral_constant<std::size_t, kDefaultBirthCandidates> {};
+template <class Caps>
+struct BirthCandidatesOf<Caps, std::void_t<decltype(Caps::kMaxBirthCandidates)>>
+    : std::integral_constant<std::size_t, Caps::kMaxBirthCandidates> {};
+
+}  // namespace detail
+
+/// Gated measurements kept per track and scan (Caps::kMaxGatePairs, default 8).
+template <class Caps>
+inline constexpr std::size_t kMaxGatePairs = detail::GatePairsOf<Caps>::value;
+/// Cells of the clutter-seeding grid (Caps::kMaxClutterGridCells, default 512).
+template <class Caps>
+inline constexpr std::size_t kMaxClutterGridCells = detail::ClutterGridCellsOf<Caps>::value;
+/// Ranked two-point birth candidates per window (Caps::kMaxBirthCandidates, default 32).
+template <class Caps>
+inline constexpr std::size_t kMaxBirthCandidates = detail::BirthCandidatesOf<Caps>::value;
+
+/// Compile-time checks of the MF-BP capacities (index widths of the slots).
+template <class Caps>
+constexpr bool mfbp_caps_are_valid() {
+  static_assert(kMaxGatePairs<Caps> >= 1 && kMaxGatePairs<Caps> <= 255,
+                "Caps::kMaxGatePairs must be in [1, 255] (8-bit edge count)");
+  static_assert(kMaxClutterGridCells<Caps> >= 1 && kMaxClutterGridCells<Caps> <= 65535,
+                "Caps::kMaxClutterGridCells must be in [1, 65535] (16-bit cell index)");
+  static_assert(kMaxBirthCandidates<Caps> >= 1, "Caps::kMaxBirthCandidates must be >= 1");
+  return true;
+}
+
+/// The params checks that depend on the caps beyond the window length
+/// (validate(params, max_window) in mfbp_params.h covers that one):
+/// birth_max_per_window above the candidate cap would be cut silently.
+template <class T, class Caps>
+[[nodiscard]] Status validate_against_caps(const MfbpParams<T>& p) {
+  if (p.birth_max_per_window > kMaxBirthCandidates<Caps>) return Status::kInvalidArgument;
+  return Status::kOk;
+}
+
+}  // namespace mptrack::mfbp

@@ -1,0 +1,97 @@
+// Confirmation and deletion of tracks and components after each window
+// (seed 000 Section III.G; docs/algorithms/mfbp.md §Confirmation and
+// reporting):
+//   * a tentative track is confirmed once its visibility b_s (eq. (64))
+//     reaches confirm_threshold on a window scan;
+//   * a track is deleted when b_s < delete_threshold on delete_run
+//     consecutive scans (finalised history + the window tail), or when it
+//     stays tentative for tentative_timeout_scans finalised scans;
+//   * a Gaussian clutter component dies when its expected count
+//     M_tau,k = M_k E[pi_tau] stays below clutter_death_count on every
+//     finalised scan of clutter_death_windows consecutive windows.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "mptrack/mfbp/clutter_slot.h"
+#include "mptrack/mfbp/mfbp_params.h"
+#include "mptrack/mfbp/track_slot.h"
+#include "mptrack/track_report.h"
+
+namespace mptrack::mfbp {
+
+template <class T, class Caps>
+void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams<T>& p,
+                    TrackerCounters& counters) {
+  for (auto& t : tracks) {
+    if (!t.alive || t.confirmed) continue;
+    for (std::size_t k = t.first; k < n; ++k) {
+      if (t.vis[k] >= p.confirm_threshold) {
+        t.confirmed = true;
+        ++counters.tracks_confirmed;
+        break;
+      }
+    }
+  }
+}
+
+/// Deletion after a window of n scans whose first fc are finalised.
+template <class T, class Caps>
+void manage_tracks(TrackTable<T, Caps>& tracks, std::size_t n, std::size_t fc, const MfbpParams<T>& p,
+                   TrackerCounters& counters) {
+  for (auto& t : tracks) {
+    if (!t.alive) continue;
+    for (std::size_t k = t.first; k < fc; ++k) {
+      t.low_run = t.vis[k] < p.delete_threshold ? t.low_run + 1u : 0u;
+      ++t.age;
+    }
+    bool remove = t.low_run >= p.delete_run;
+    std::uint32_t run = t.low_run;
+    for (std::size_t k = (fc > t.first ? fc : t.first); k < n && !remove; ++k) {
+      run = t.vis[k] < p.delete_threshold ? run + 1u : 0u;
+      remove = run >= p.delete_run;
+    }
+    if (!t.confirmed && t.age >= p.tentative_timeout_scans) remove = true;
+    if (remove) {
+      t.alive = false;
+      ++counters.tracks_deleted;
+    }
+  }
+}
+
+/// Component death after a window whose first fc scans are finalised.
+template <class T, class Caps>
+void manage_components(ClutterTable<T, Caps>& cl, std::size_t fc, const MfbpParams<T>& p,
+                       TrackerCounters& counters) {
+  for (std::size_t c = 0; c < ClutterTable<T, Caps>::kMaxComp; ++c) {
+    CompSlot<T, Caps>& cs = cl.comps[c];
+    if (!cs.alive) continue;
+    bool all_low = fc > 0;
+    for (std::size_t k = 0; k < fc; ++k) {
+      if (!(cl.component_count(k, c + 1) < p.clutter_death_count)) all_low = false;
+    }
+    cs.low_windows = all_low ? cs.low_windows + 1u : 0u;
+    if (cs.low_windows >= p.clutter_death_windows) {
+      cs.alive = false;
+      ++counters.clutter_deleted;
+    }
+  }
+}
+
+/// Max-gap restart: every track and Gaussian component is dropped (counted).
+template <class T, class Caps>
+void drop_all(TrackTable<T, Caps>& tracks, ClutterTable<T, Caps>& cl, TrackerCounters& counters) {
+  for (auto& t : tracks) {
+    if (!t.alive) continue;
+    t.alive = false;
+    ++counters.tracks_deleted;
+  }
+  for (auto& c : cl.comps) {
+    if (!c.alive) continue;
+    c.alive = false;
+    ++counters.clutter_deleted;
+  }
+}
+
+}  // namespace mptrack::mfbp

@@ -1,0 +1,218 @@
+// Two-point track birth (seed 000 Section III.G; docs/algorithms/mfbp.md
+// §Birth): measurements that no track explains are paired across scans
+// (k1, k2 = k1 + lag, lag <= birth_max_lag) inside the v_max box; at most
+// one pair per second point (the shortest lag, then the nearest first
+// point), no measurement in two pairs; the best birth_max_per_window pairs
+// by amplitude sum start tracks (two_point_state, birth_snr_belief).
+//
+// "Unexplained" on a scan with association beliefs: sum_i a_ij below
+// unexplained_threshold and Gaussian-clutter share below
+// birth_max_component_share; on a new scan (no beliefs yet): outside the
+// chi^2 gate of every track. The TrackSpawner owns that per-measurement
+// mark; clutter seeding (clutter_spawn.h) reads it on new scans.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "mptrack/mfbp/cubature.h"
+#include "mptrack/mfbp/mfbp_caps.h"
+#include "mptrack/mfbp/mfbp_params.h"
+#include "mptrack/mfbp/model_constants.h"
+#include "mptrack/mfbp/track_birth.h"
+#include "mptrack/mfbp/track_slot.h"
+#include "mptrack/mfbp/window_store.h"
+#include "mptrack/model/mahalanobis.h"
+#include "mptrack/profile.h"
+#include "mptrack/track_report.h"
+
+namespace mptrack::mfbp {
+
+template <class T, class Caps>
+class TrackSpawner {
+ public:
+  static constexpr std::size_t kMaxMeas = Caps::kMaxMeasurements;
+  static constexpr std::size_t kStore = Caps::kMaxWindow;
+  static constexpr std::size_t kMaxCandidates = kMaxBirthCandidates<Caps>;
+  using Store = WindowStore<T, Caps>;
+  using Tracks = TrackTable<T, Caps>;
+
+  /// Marks the unexplained measurements of every stored scan and starts
+  /// tracks from the best pairs among the n window scans (second points).
+  void spawn(std::size_t n, Store& store, Tracks& tracks, const MfbpParams<T>& p,
+             const ModelConstants<T>& mc, std::uint32_t& next_id, TrackerCounters& counters,
+             bool& cap_hit) {
+    MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
+    mark_unexplained(store, tracks, p, mc);
+    Candidates cand{};
+    std::size_t nc = 0;
+    const std::size_t max_births = p.birth_max_per_window < kMaxCandidates ? p.birth_max_per_window : kMaxCandidates;
+    for (std::size_t k2 = 0; k2 < n; ++k2) {
+      const std::size_t s2 = store.n_hist() + k2;
+      for (std::size_t j2 = 0; j2 < store.at(s2).count; ++j2) {
+        if (unexplained(store, s2, j2)) pair_second_point(store, s2, j2, p, cand, nc, max_births);
+      }
+    }
+    for (std::size_t b = 0; b < nc; ++b) start_track(cand[b], store, tracks, p, next_id, counters, cap_hit);
+  }
+
+  /// Unexplained by the tracks at the last spawn() and not used by a birth.
+  bool unexplained(const Store& store, std::size_t si, std::size_t j) const {
+    return unexplained_[si][j] != 0 && store.at(si).consumed[j] == 0;
+  }
+
+ private:
+  struct Candidate {
+    T score = T(0);
+    std::uint16_t s1 = 0, j1 = 0, s2 = 0, j2 = 0;
+  };
+  using Candidates = std::array<Candidate, kMaxCandidates>;
+
+  void mark_unexplained(const Store& store, const Tracks& tracks, const MfbpParams<T>& p,
+                        const ModelConstants<T>& mc) {
+    for (std::size_t si = 0; si < store.size(); ++si) {
+      const ScanSlot<T, Caps>& s = store.at(si);
+      for (std::size_t j = 0; j < s.count; ++j) {
+        bool u = s.consumed[j] == 0;
+        if (u && s.has_beliefs) {
+          const T comp_share = T(1) - s.target_share[j] - s.uniform_share[j];
+          u = s.target_share[j] < p.unexplained_threshold &&
+              (p.birth_max_component_share >= T(1) || comp_share < p.birth_max_component_share);
+        }
+        unexplained_[si][j] = u ? 1u : 0u;
+      }
+      if (!s.has_beliefs && si >= store.n_hist()) mark_gated(s, si, si - store.n_hist(), tracks, p, mc);
+    }
+  }
+
+  /// New scan: a measurement inside the chi^2 gate of a track present on
+  /// window scan k is explained. One cubature per track.
+  void mark_gated(const ScanSlot<T, Caps>& s, std::size_t si, std::size_t k, const Tracks& tracks,
+                  const MfbpParams<T>& p, const ModelConstants<T>& mc) {
+    for (const auto& t : tracks) {
+      if (!t.alive || k < t.first) continue;
+      Vec2<T> z_hat;
+      Mat2<T> Sz;
+      Mat42<T> Cxz;
+      if (!cubature_polar_moments(t.xs[k], t.Ps[k].get(), z_hat, Sz, Cxz)) continue;
+      const model::Mahalanobis2<T> gate(Sz + mc.R);
+      if (!gate.valid()) continue;
+      for (std::size_t j = 0; j < s.count; ++j) {
+        if (unexplained_[si][j] == 0) continue;
+        const T er = s.r[j] - z_hat(0);
+        const T ea = wrap_angle(s.az[j] - z_hat(1));
+        if (gate.distance2(er, ea) <= p.gate_chi2) unexplained_[si][j] = 0;
+      }
+    }
+  }
+
+  /// The nearest unexplained first point on stored scan s1 for the second
+  /// point (s2, j2) inside the v_max box; kMaxMeas if none.
+  std::size_t nearest_first_point(const Store& store, std::size_t s1, std::size_t s2, std::size_t j2,
+                                  const MfbpParams<T>& p) const {
+    const ScanSlot<T, Caps>& a1 = store.at(s1);
+    const T r2 = store.at(s2).r[j2];
+    const T dt = dt_s<T>(a1.time_us, store.at(s2).time_us);
+    const Vec2<T> p2 = cartesian_of_polar(r2, store.at(s2).az[j2]);
+    // Only first points within the range reach can pass the box gate
+    // (birth_range_gate): start at the first one in range order, stop
+    // after the last, so the search is O(log N + hits), not O(N).
+    std::size_t lo = 0, hi = a1.count;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (a1.r[a1.by_range[mid]] < r2 &&
+          !birth_range_gate(a1.r[a1.by_range[mid]], r2, dt, p.v_max_x_mps, p.v_max_y_mps)) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    T best_d = T(0);
+    std::size_t best_j = kMaxMeas;
+    for (std::size_t q = lo; q < a1.count; ++q) {
+      const std::size_t j1 = a1.by_range[q];
+      if (!birth_range_gate(a1.r[j1], r2, dt, p.v_max_x_mps, p.v_max_y_mps)) {
+        if (a1.r[j1] > r2) break;  // beyond the reach: so is every later one
+        continue;
+      }
+      if (!unexplained(store, s1, j1)) continue;
+      const Vec2<T> p1 = cartesian_of_polar(a1.r[j1], a1.az[j1]);
+      if (!birth_gate(p1, p2, dt, p.v_max_x_mps, p.v_max_y_mps)) continue;
+      const T dist = (p2 - p1).squaredNorm();
+      // Nearest first point; ties go to the lowest index (as in index order).
+      if (best_j == kMaxMeas || dist < best_d || (!(best_d < dist) && j1 < best_j)) {
+        best_d = dist;
+        best_j = j1;
+      }
+    }
+    return best_j;
+  }
+
+  /// The pair of second point (s2, j2) at the shortest lag, ranked among
+  /// the candidates (its measurements are marked consumed while it stays).
+  void pair_second_point(Store& store, std::size_t s2, std::size_t j2, const MfbpParams<T>& p,
+                         Candidates& cand, std::size_t& nc, std::size_t max_births) const {
+    for (std::size_t lag = 1; lag <= p.birth_max_lag && lag <= s2; ++lag) {
+      const std::size_t s1 = s2 - lag;
+      const std::size_t j1 = nearest_first_point(store, s1, s2, j2, p);
+      if (j1 == kMaxMeas) continue;
+      Candidate c;
+      c.score = store.at(s1).amp[j1] + store.at(s2).amp[j2];
+      c.s1 = static_cast<std::uint16_t>(s1);
+      c.j1 = static_cast<std::uint16_t>(j1);
+      c.s2 = static_cast<std::uint16_t>(s2);
+      c.j2 = static_cast<std::uint16_t>(j2);
+      offer(c, store, cand, nc, max_births);
+      return;
+    }
+  }
+
+  /// Keeps the best max_births candidates by score (ties: earlier wins).
+  static void offer(const Candidate& c, Store& store, Candidates& cand, std::size_t& nc,
+                    std::size_t max_births) {
+    if (nc == max_births) {
+      if (!(c.score > cand[nc - 1].score)) return;
+      set_consumed(store, cand[nc - 1], 0);
+      --nc;
+    }
+    set_consumed(store, c, 1);  // so no measurement joins two pairs
+    std::size_t pos = nc;
+    while (pos > 0 && c.score > cand[pos - 1].score) {
+      cand[pos] = cand[pos - 1];
+      --pos;
+    }
+    cand[pos] = c;
+    ++nc;
+  }
+
+  static void set_consumed(Store& store, const Candidate& c, std::uint8_t v) {
+    store.at(c.s1).consumed[c.j1] = v;
+    store.at(c.s2).consumed[c.j2] = v;
+  }
+
+  static void start_track(const Candidate& c, Store& store, Tracks& tracks, const MfbpParams<T>& p,
+                          std::uint32_t& next_id, TrackerCounters& counters, bool& cap_hit) {
+    const std::size_t slot = tracks.free_slot();
+    if (slot == Tracks::kSize) {
+      ++counters.track_cap_hits;
+      cap_hit = true;
+      set_consumed(store, c, 0);
+      return;
+    }
+    const ScanSlot<T, Caps>& a = store.at(c.s1);
+    const ScanSlot<T, Caps>& b = store.at(c.s2);
+    TrackSlot<T, Caps>& t = tracks[slot];
+    t.start(next_id++, c.s2 - store.n_hist(), p.visibility_at_birth);
+    two_point_state(a.r[c.j1], a.az[c.j1], b.r[c.j2], b.az[c.j2], dt_s<T>(a.time_us, b.time_us),
+                    p.sigma_r_m, p.sigma_az_rad, p.v_max_x_mps, p.v_max_y_mps, t.x0, t.P0);
+    t.ig0 = birth_snr_belief(a.amp[c.j1], b.amp[c.j2], p.amplitude_threshold, p.ig_birth_shape,
+                             p.ig_birth_scale_factor);
+    t.t0_us = b.time_us;
+    ++counters.tracks_born;
+  }
+
+  std::array<std::array<std::uint8_t, kMaxMeas>, kStore> unexplained_{};
+};
+
+}  // namespace mptrack::mfbp
