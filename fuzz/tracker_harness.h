@@ -7,7 +7,8 @@
 // checked after every step: the status is one the tracker documents,
 // reported numbers are finite, covariances SPD, and the counters add up
 // (measurements_in = measurements of accepted scans, scans + rejected =
-// steps).
+// steps), and the contract rules of tracker_contract.h (kCapacityExceeded
+// exactly when a cap counter moved; a refused scan leaves outputs() empty).
 #pragma once
 
 #include <cstddef>
@@ -16,6 +17,7 @@
 #include <cstdlib>
 
 #include "fuzz_common.h"
+#include "mptrack/tracker_contract.h"
 
 namespace mptrack::fuzz {
 
@@ -56,13 +58,17 @@ void run_twin(FuzzReader& in, const Region& reg, Tracker& a, Tracker& b, std::si
                      static_cast<double>(m.doppler_mps));
       }
     }
+    const std::uint64_t caps_before = total_cap_hits(a.counters());
     const Status sa = a.step(scan);
     ++steps;
     FUZZ_CHECK(sa == Status::kOk || sa == Status::kPartial || sa == Status::kOutOfOrder ||
                sa == Status::kCapacityExceeded);
+    // tracker_contract.h rule 2: kCapacityExceeded exactly when a cap counter moved.
+    FUZZ_CHECK((sa == Status::kCapacityExceeded) == (total_cap_hits(a.counters()) != caps_before));
     if (is_rejection<Tracker>(sa)) {
       ++rejected;
       FUZZ_CHECK(scan.time_us <= last_time);
+      FUZZ_CHECK(a.outputs().empty());  // rule 1: a refused scan finalises nothing
     } else {
       accepted_meas += scan.measurements.size();
       const Status sb = b.step(scan);

@@ -477,3 +477,34 @@ TEST_CASE("mfbp known clutter map can be replaced between scans and is validated
   CHECK(trk.set_known_clutter(kc) == Status::kInvalidArgument);
   CHECK(trk.params().known_clutter.components[0].covariance(1, 1) == 0.003f);  // unchanged
 }
+
+TEST_CASE("mfbp gate-pair cap: pairs beyond Caps::kMaxGatePairs are counted and reported") {
+  // One target at 30 km tracked for 6 scans, then a scan in which 12
+  // distinct detections fall inside its gate (within 10 m and 0.2 mrad of
+  // the prediction; gate chi2 30 at sigma 20 m / 0.6 deg): the track keeps
+  // its 8 most likely pairs, the other 4 are dropped and counted.
+  auto trk = make_tracker<float, TestCaps>(1, 1);
+  Scan<float, TestCaps::kMaxMeasurements> scan;
+  for (int k = 0; k < 7; ++k) {
+    scan.time_us = 1000000u + static_cast<std::uint64_t>(k) * 1250000u;
+    scan.measurements.clear();
+    const int n = k < 6 ? 1 : 12;
+    for (int j = 0; j < n; ++j) {
+      Measurement<float> m;
+      m.range_m = 30000.0f + 1.0f * static_cast<float>(j);
+      m.azimuth_rad = 0.6f + 0.00002f * static_cast<float>(j);
+      m.amplitude = 6.0f;
+      REQUIRE(scan.measurements.push_back(m) == Status::kOk);
+    }
+    const std::uint64_t before = trk->counters().association_cap_hits;
+    const Status s = trk->step(scan);
+    if (k < 6) {
+      CHECK(s == Status::kOk);
+      CHECK(trk->counters().association_cap_hits == before);
+    } else {
+      CHECK(s == Status::kCapacityExceeded);
+      CHECK(trk->counters().association_cap_hits - before == 4u);
+    }
+  }
+  static_assert(mfbp::kMaxGatePairs<TestCaps> == 8, "the test assumes the default 8 pairs");
+}

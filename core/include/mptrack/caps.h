@@ -4,14 +4,19 @@
 // A caps type is any struct with the static members below. Pass it as the
 // Caps template parameter of a core component, e.g.
 //   mptrack::MfbpTracker<float, mptrack::SmallBoardCaps> tracker;  // placed in .bss
-// The MF-BP scratch capacities (kMaxGatePairs, kMaxClutterGridCells,
-// kMaxBirthCandidates) are optional: a caps type without them gets the
-// values of the presets below (mfbp/mfbp_caps.h reads them with a default).
+// The four capacities every component shares (kMaxTargets, kMaxMeasurements,
+// kMaxClutterComponents, kMaxWindow) are required. The capacities of one
+// tracker only (MF-BP: kMaxGatePairs, kMaxClutterGridCells,
+// kMaxBirthCandidates; GM-PHD/CPHD: kMaxMixtureComponents; CBMeMBer:
+// kMaxComponentsPerBernoulli, kMaxRawComponentsPerBernoulli) are optional:
+// a caps type without them gets the values of the presets below (read
+// through MPTRACK_OPTIONAL_CAP traits: mfbp/mfbp_caps.h, rfs/rfs_caps.h).
 // Run-time tunables never live here: they are in each component's Params
 // struct (units and defaults there), validated once by init().
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 
 namespace mptrack {
 
@@ -22,7 +27,7 @@ struct DefaultCaps {
   static constexpr std::size_t kMaxClutterComponents = 8;   ///< non-uniform clutter components
   static constexpr std::size_t kMaxWindow = 7;              ///< smoothing window length K (scans)
   /// MF-BP: gated measurements kept per track and scan (the most likely
-  /// ones; the rest are dropped and counted in gate_overflows()).
+  /// ones; the rest are dropped and counted in TrackerCounters::association_cap_hits).
   static constexpr std::size_t kMaxGatePairs = 8;
   /// MF-BP: cells of the clutter-seeding grid (the grid is coarsened until
   /// the region fits).
@@ -30,6 +35,13 @@ struct DefaultCaps {
   /// MF-BP: two-point birth candidates ranked per window; the params field
   /// birth_max_per_window must not exceed it (init() refuses).
   static constexpr std::size_t kMaxBirthCandidates = 32;
+  /// GM-PHD/CPHD: Gaussian components kept after pruning and merging
+  /// (2 per target; the lightest beyond it are dropped, track_cap_hits).
+  static constexpr std::size_t kMaxMixtureComponents = 128;
+  /// CBMeMBer: Gaussian components per Bernoulli after reduction, and the
+  /// heaviest collected before it (track_cap_hits counts what is dropped).
+  static constexpr std::size_t kMaxComponentsPerBernoulli = 4;
+  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 16;
 };
 
 /// Small board: fits a 64 KiB RAM budget (see README, footprint report).
@@ -46,6 +58,9 @@ struct SmallBoardCaps {
   static constexpr std::size_t kMaxGatePairs = 8;
   static constexpr std::size_t kMaxClutterGridCells = 512;
   static constexpr std::size_t kMaxBirthCandidates = 32;
+  static constexpr std::size_t kMaxMixtureComponents = 32;
+  static constexpr std::size_t kMaxComponentsPerBernoulli = 4;
+  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 16;
 };
 
 /// Large: Cortex-A class cores with MiBs of RAM.
@@ -57,7 +72,22 @@ struct LargeCaps {
   static constexpr std::size_t kMaxGatePairs = 8;
   static constexpr std::size_t kMaxClutterGridCells = 512;
   static constexpr std::size_t kMaxBirthCandidates = 32;
+  static constexpr std::size_t kMaxMixtureComponents = 512;
+  static constexpr std::size_t kMaxComponentsPerBernoulli = 4;
+  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 16;
 };
+
+/// Declares the trait Trait<Caps>: Caps::Member if the caps type declares
+/// it, otherwise Default (C++17 detection idiom). Capacities that only one
+/// component needs (MF-BP's gate pairs, CBMeMBer's components per
+/// Bernoulli, ...) are read through such a trait, so a caps type written
+/// before they existed still compiles, with the presets' values.
+#define MPTRACK_OPTIONAL_CAP(Trait, Member, Default)                                          \
+  template <class Caps, class = void>                                                        \
+  struct Trait : std::integral_constant<std::size_t, (Default)> {};                          \
+  template <class Caps>                                                                      \
+  struct Trait<Caps, std::void_t<decltype(Caps::Member)>>                                    \
+      : std::integral_constant<std::size_t, Caps::Member> {}
 
 /// Compile-time validation of a caps type; every component calls it in a
 /// static_assert so a bad preset fails to build with a readable message.

@@ -39,6 +39,7 @@
 //    scans (they start a new window).
 #pragma once
 
+#include <cstdint>
 #include <type_traits>
 #include <utility>
 
@@ -107,6 +108,20 @@ struct EstimatesMatch<X, std::void_t<typename X::OutputQueue::value_type>>
     : std::is_same<typename X::OutputQueue::value_type, typename X::Estimate> {};
 
 }  // namespace contract_detail
+
+/// Every compile-time cap counter of TrackerCounters: the sum rule 2 watches.
+inline std::uint64_t total_cap_hits(const TrackerCounters& c) {
+  return c.track_cap_hits + c.clutter_cap_hits + c.measurements_over_cap + c.association_cap_hits;
+}
+
+/// Rule 2 in one place: the status of an accepted step() or flush() whose
+/// call began with total_cap_hits() == caps_before. kCapacityExceeded if
+/// any cap counter moved, else kPartial if measurements were rejected,
+/// else kOk.
+inline Status accepted_status(const TrackerCounters& c, std::uint64_t caps_before, bool partial) {
+  if (total_cap_hits(c) != caps_before) return Status::kCapacityExceeded;
+  return partial ? Status::kPartial : Status::kOk;
+}
 
 /// True if X has every member of the contract with the documented types.
 template <class X>

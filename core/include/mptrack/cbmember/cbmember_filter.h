@@ -15,6 +15,7 @@
 // statistics and births.
 //
 // Caps and overflow policy: a Bernoulli holds up to kMaxComponentsPerTrack
+// (Caps::kMaxComponentsPerBernoulli; kMaxRawComponents likewise, rfs/rfs_caps.h)
 // components (reduced with mixture.h after every update; collection keeps
 // the heaviest kMaxRawComponents, replacing the lightest); the track list
 // keeps the kMaxTargets highest-r Bernoullis. Every drop is counted in
@@ -28,6 +29,7 @@
 #include <cstdint>
 
 #include "mptrack/caps.h"
+#include "mptrack/rfs/rfs_caps.h"
 #include "mptrack/measurement.h"
 #include "mptrack/rfs/clutter_estimator.h"
 #include "mptrack/rfs/filter_common.h"
@@ -38,6 +40,7 @@
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
+#include "mptrack/tracker_contract.h"
 
 namespace mptrack::cbmember {
 
@@ -56,8 +59,9 @@ class CbMemberFilter {
   using OutputQueue = StaticVector<Estimate, 1>;
   using Component = rfs::TargetComponent<T>;
 
-  static constexpr std::size_t kMaxComponentsPerTrack = 4;
-  static constexpr std::size_t kMaxRawComponents = 16;
+  static_assert(rfs::rfs_caps_are_valid<Caps>());
+  static constexpr std::size_t kMaxComponentsPerTrack = rfs::kMaxComponentsPerBernoulli<Caps>;
+  static constexpr std::size_t kMaxRawComponents = rfs::kMaxRawComponentsPerBernoulli<Caps>;
   static constexpr std::size_t kMaxTracks = Caps::kMaxTargets;
   static constexpr std::size_t kMaxWorkTracks = Caps::kMaxTargets + Caps::kMaxMeasurements;
 
@@ -108,7 +112,7 @@ class CbMemberFilter {
     batch_.load(scan, params_, model_);
     counters_.measurements_invalid += batch_.invalid;
     counters_.measurements_duplicate += batch_.duplicate;
-    const std::uint64_t cap_before = counters_.track_cap_hits;
+    const std::uint64_t caps_before = total_cap_hits(counters_);
 
     predict(dt);
     clutter_.evaluate(batch_.z.data(), batch_.amp.data(), batch_.valid.data(), batch_.n);
@@ -121,8 +125,7 @@ class CbMemberFilter {
     make_births();
     extract(scan.time_us);
     ++scan_index_;
-    if (counters_.track_cap_hits != cap_before) return Status::kCapacityExceeded;
-    return batch_.invalid + batch_.duplicate > 0 ? Status::kPartial : Status::kOk;
+    return accepted_status(counters_, caps_before, batch_.invalid + batch_.duplicate > 0);
   }
 
   Status flush() {

@@ -50,6 +50,7 @@
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
+#include "mptrack/tracker_contract.h"
 #include "mptrack/validate.h"
 
 namespace mptrack {
@@ -98,11 +99,13 @@ class GnnTracker {
   /// drops every track (counted in gap_resets and tracks_deleted) and is
   /// then processed as the first scan of a new run (scan_clock.h).
   /// Births refused because kMaxTracks tracks are alive are counted in
-  /// track_cap_hits (the scan still succeeds); covariance repairs in
+  /// track_cap_hits and make the step return kCapacityExceeded (the scan
+  /// is still processed: tracker_contract.h rule 2); covariance repairs in
   /// numerical_repairs.
   Status step(const ScanType& scan) {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
+    const std::uint64_t caps_before = total_cap_hits(counters_);
     if (clock_.gap_exceeded(scan.time_us)) {
       ++counters_.gap_resets;
       counters_.tracks_deleted += tracks_.size();
@@ -123,7 +126,7 @@ class GnnTracker {
     report(scan);
     clock_.advance(scan.time_us);
     ++counters_.scans;
-    return invalid > 0 ? Status::kPartial : Status::kOk;
+    return accepted_status(counters_, caps_before, invalid > 0);
   }
 
   /// End of data. Nothing is held back by an online filter: clears outputs().

@@ -8,8 +8,8 @@
 // (eqs. (54)-(55), (62), (69)).
 //
 // The Associator owns the BP and the per-scan moments scratch; it counts
-// BP runs, iterations and gated pairs dropped by the kMaxGatePairs cap in
-// the caller's AssociationStats.
+// BP runs and iterations in the caller's AssociationStats, and gated pairs
+// dropped by the kMaxGatePairs cap in TrackerCounters::association_cap_hits.
 #pragma once
 
 #include <array>
@@ -33,7 +33,6 @@ namespace mptrack::mfbp {
 /// Association diagnostics since init() (the tracker keeps them next to its
 /// counters; an 8-byte member here would pad the tracker on 32-bit targets).
 struct AssociationStats {
-  std::uint64_t gate_overflows = 0;  ///< gated pairs dropped by the kMaxGatePairs cap
   std::uint64_t bp_runs = 0;
   std::uint64_t bp_iterations = 0;
 };
@@ -53,9 +52,11 @@ class Associator {
 
   /// Evidence, BP and stored beliefs of window scan k. Returns the largest
   /// change of any stored association belief (the outer loop's test).
+  /// Gate pairs dropped by the cap are counted when count_drops is set (the
+  /// first MP iteration of a window: the later ones drop the same pairs).
   T associate(std::size_t k, WindowStore<T, Caps>& store, Tracks& tracks,
               const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p, const ModelConstants<T>& mc,
-              TrackerCounters& counters, AssociationStats& stats, bool& cap_hit) {
+              TrackerCounters& counters, AssociationStats& stats, bool count_drops) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kEvidence);
     Scan& s = store.win(k);
     const Sources src = clutter_sources(cl, p);
@@ -72,7 +73,9 @@ class Associator {
     }
     compute_moments(k, s, tracks, p, mc, counters);
     TrackList bp_track{};
-    const std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, stats, cap_hit);
+    std::uint64_t dropped = 0;
+    const std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, dropped);
+    if (count_drops) counters.association_cap_hits += dropped;
 
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBp);
     const auto res = bp_.run(p.bp_damping, p.bp_tolerance, p.bp_max_iterations);
@@ -117,8 +120,7 @@ class Associator {
 
   /// Gated target evidence into the BP; bp_track[b] = the track of BP target b.
   std::size_t add_targets(std::size_t k, const Scan& s, const Tracks& tracks, const MfbpParams<T>& p,
-                          const ModelConstants<T>& mc, TrackList& bp_track, AssociationStats& stats,
-                          bool& cap_hit) {
+                          const ModelConstants<T>& mc, TrackList& bp_track, std::uint64_t& dropped_pairs) {
     std::size_t nbt = 0;
     for (std::size_t i = 0; i < kMaxTargets; ++i) {
       const TrackSlot<T, Caps>& t = tracks[i];
@@ -130,10 +132,7 @@ class Associator {
       const T theta0 = missed_evidence(pd, t.extr[k], p.pd_invisible);
       GateList<T, kMaxGate> list;
       const std::size_t dropped = target_evidence(t, mo, gate, s, k, p, mc, list);
-      if (dropped > 0) {
-        stats.gate_overflows += dropped;
-        cap_hit = true;
-      }
+      dropped_pairs += dropped;  // Caps::kMaxGatePairs: the least likely pairs are dropped
       if (bp_.add_target(theta0) != Status::kOk) continue;
       const auto order = list.measurement_order();
       for (std::size_t a = 0; a < list.size; ++a) (void)bp_.add_edge(list.j[order[a]], list.v[order[a]]);

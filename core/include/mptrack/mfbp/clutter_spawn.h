@@ -42,7 +42,7 @@ class ClutterSpawner {
 
   void spawn(std::size_t n, const Store& store, ClutterTable<T, Caps>& cl,
              const TrackSpawner<T, Caps>& births, const MfbpParams<T>& p, const ModelConstants<T>& mc,
-             std::uint32_t& next_id, TrackerCounters& counters, bool& cap_hit) {
+             std::uint32_t& next_id, TrackerCounters& counters) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
     const std::size_t pool_first = (store.n_hist() + n > kMaxWindow) ? store.n_hist() + n - kMaxWindow : 0;
     const std::size_t pool_end = store.n_hist() + n;
@@ -77,7 +77,6 @@ class ClutterSpawner {
       const std::size_t slot = free_slot(cl);
       if (slot == kMaxComp) {
         ++counters.clutter_cap_hits;
-        cap_hit = true;
         break;
       }
       start_component(cl.comps[slot], seed, n_pool, p, mc, next_id);

@@ -47,8 +47,9 @@
 //     measurement is dropped for capacity; invalid ones are skipped and
 //     counted in measurements_invalid (step returns kPartial);
 //   * gated pairs: each track keeps its Caps::kMaxGatePairs most likely
-//     measurements per scan (gate_overflows() counts the dropped pairs,
-//     step returns kCapacityExceeded);
+//     measurements per scan (association_cap_hits counts the dropped
+//     pairs once per window that associates the scan; step returns
+//     kCapacityExceeded);
 //   * tracks: births beyond kMaxTargets live tracks are refused
 //     (track_cap_hits); components beyond kMaxClutterComponents likewise
 //     (clutter_cap_hits); both make step return kCapacityExceeded;
@@ -80,6 +81,7 @@
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
+#include "mptrack/tracker_contract.h"
 
 namespace mptrack {
 
@@ -147,9 +149,9 @@ class MfbpTracker {
   /// kCapacityExceeded if an internal cap was hit (see the file comment;
   /// takes precedence over kPartial). Both are successes with losses.
   Status step(const ScanType& scan) {
+    outputs_.clear();  // tracker_contract.h rule 1: a refused scan finalises nothing
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
-    outputs_.clear();
-    step_cap_hit_ = false;
+    const std::uint64_t caps_before = total_cap_hits(counters_);
     if (clock_.gap_exceeded(scan.time_us)) {
       restart_after_gap();
       clock_.restart();
@@ -165,24 +167,21 @@ class MfbpTracker {
     }
     store_.push_window();
     if (store_.n_win() >= params_.window_length) process_window(params_.slide);
-    if (step_cap_hit_) return Status::kCapacityExceeded;
-    return partial ? Status::kPartial : Status::kOk;
+    return accepted_status(counters_, caps_before, partial);
   }
 
   /// End of data: processes and finalises every scan still held back.
   Status flush() {
     if (!initialized_) return Status::kNotInitialized;
     outputs_.clear();
-    step_cap_hit_ = false;
+    const std::uint64_t caps_before = total_cap_hits(counters_);
     MPTRACK_PROFILE_STEP(g_mfbp);
     if (store_.n_win() > 0) process_window(store_.n_win());
-    return step_cap_hit_ ? Status::kCapacityExceeded : Status::kOk;
+    return accepted_status(counters_, caps_before, false);
   }
 
   const OutputQueue& outputs() const { return outputs_; }
   const TrackerCounters& counters() const { return counters_; }
-  /// Gated (track, measurement) pairs dropped by the kMaxGatePairs cap.
-  std::uint64_t gate_overflows() const { return assoc_stats_.gate_overflows; }
   /// Loopy-BP runs and their total iterations since init() (diagnostics).
   std::uint64_t bp_runs() const { return assoc_stats_.bp_runs; }
   std::uint64_t bp_iterations() const { return assoc_stats_.bp_iterations; }
@@ -215,14 +214,14 @@ class MfbpTracker {
     spawn_tracks(n);
     if (estimate_clutter() && params_.clutter_birth) {
       clutter_spawner_.spawn(n, store_, clutter_, track_spawner_, params_, model_, next_comp_id_,
-                             counters_, step_cap_hit_);
+                             counters_);
     }
     mf_sweep(n);
     for (std::size_t l = 0; l < params_.mp_max_iterations; ++l) {
       T delta = T(0);
       for (std::size_t k = 0; k < n; ++k) {
         const T d = associator_.associate(k, store_, tracks_, clutter_, params_, model_, counters_,
-                                          assoc_stats_, step_cap_hit_);
+                                          assoc_stats_, l == 0);
         delta = d > delta ? d : delta;
       }
       mf_sweep(n);
@@ -255,7 +254,7 @@ class MfbpTracker {
   }
 
   void spawn_tracks(std::size_t n) {
-    track_spawner_.spawn(n, store_, tracks_, params_, model_, next_track_id_, counters_, step_cap_hit_);
+    track_spawner_.spawn(n, store_, tracks_, params_, model_, next_track_id_, counters_);
   }
 
   // Second birth pass (our choice, docs/algorithms/mfbp.md §Departures):
@@ -313,7 +312,6 @@ class MfbpTracker {
   std::uint64_t finalized_ = 0;
   ScanClock clock_{};
   std::array<bool, kMaxMeas> kept_{};  ///< store_scan: input measurement j kept (duplicate rule)
-  bool step_cap_hit_ = false;
 };
 
 }  // namespace mptrack

@@ -41,8 +41,7 @@ class TrackSpawner {
   /// Marks the unexplained measurements of every stored scan and starts
   /// tracks from the best pairs among the n window scans (second points).
   void spawn(std::size_t n, Store& store, Tracks& tracks, const MfbpParams<T>& p,
-             const ModelConstants<T>& mc, std::uint32_t& next_id, TrackerCounters& counters,
-             bool& cap_hit) {
+             const ModelConstants<T>& mc, std::uint32_t& next_id, TrackerCounters& counters) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
     mark_unexplained(store, tracks, p, mc);
     Candidates cand{};
@@ -54,7 +53,7 @@ class TrackSpawner {
         if (unexplained(store, s2, j2)) pair_second_point(store, s2, j2, p, cand, nc, max_births);
       }
     }
-    for (std::size_t b = 0; b < nc; ++b) start_track(cand[b], store, tracks, p, next_id, counters, cap_hit);
+    for (std::size_t b = 0; b < nc; ++b) start_track(cand[b], store, tracks, p, next_id, counters);
   }
 
   /// Unexplained by the tracks at the last spawn() and not used by a birth.
@@ -192,11 +191,10 @@ class TrackSpawner {
   }
 
   static void start_track(const Candidate& c, Store& store, Tracks& tracks, const MfbpParams<T>& p,
-                          std::uint32_t& next_id, TrackerCounters& counters, bool& cap_hit) {
+                          std::uint32_t& next_id, TrackerCounters& counters) {
     const std::size_t slot = tracks.free_slot();
     if (slot == Tracks::kSize) {
       ++counters.track_cap_hits;
-      cap_hit = true;
       set_consumed(store, c, 0);
       return;
     }

@@ -19,7 +19,8 @@
 // The clutter model is the same object for the three filters (mode chosen
 // by FilterParams::clutter_mode).
 //
-// Caps: kMaxComponents = 2 kMaxTargets after reduction; the update works in
+// Caps: kMaxComponents = Caps::kMaxMixtureComponents (default 2 kMaxTargets,
+// rfs/rfs_caps.h) after reduction; the update works in
 // a buffer of kMaxWork components. Overflow policy there: when it is full a
 // new component replaces the lightest one if it is heavier (else it is
 // dropped); both are counted in counters().track_cap_hits.
@@ -30,6 +31,7 @@
 #include <cstdint>
 
 #include "mptrack/caps.h"
+#include "mptrack/rfs/rfs_caps.h"
 #include "mptrack/measurement.h"
 #include "mptrack/phd/cardinality.h"
 #include "mptrack/rfs/clutter_estimator.h"
@@ -41,6 +43,7 @@
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
+#include "mptrack/tracker_contract.h"
 
 namespace mptrack::phd {
 
@@ -57,7 +60,8 @@ class PhdFilter {
   using Component = rfs::TargetComponent<T>;
 
   static constexpr std::size_t kMaxMeasurements = Caps::kMaxMeasurements;
-  static constexpr std::size_t kMaxComponents = 2 * Caps::kMaxTargets;
+  static_assert(rfs::rfs_caps_are_valid<Caps>());
+  static constexpr std::size_t kMaxComponents = rfs::kMaxMixtureComponents<Caps>;
   static constexpr std::size_t kMaxPredicted = kMaxComponents + Caps::kMaxMeasurements;
   static constexpr std::size_t kMaxWork = 2 * kMaxPredicted;
   static constexpr std::size_t kMaxCardinality = Caps::kMaxTargets;
@@ -107,7 +111,7 @@ class PhdFilter {
     batch_.load(scan, params_, model_);
     counters_.measurements_invalid += batch_.invalid;
     counters_.measurements_duplicate += batch_.duplicate;
-    const std::uint64_t cap_before = counters_.track_cap_hits;
+    const std::uint64_t caps_before = total_cap_hits(counters_);
 
     predict(dt);
     clutter_.evaluate(batch_.z.data(), batch_.amp.data(), batch_.valid.data(), batch_.n);
@@ -121,8 +125,7 @@ class PhdFilter {
     make_births();
     extract(scan.time_us);
     ++scan_index_;
-    if (counters_.track_cap_hits != cap_before) return Status::kCapacityExceeded;
-    return batch_.invalid + batch_.duplicate > 0 ? Status::kPartial : Status::kOk;
+    return accepted_status(counters_, caps_before, batch_.invalid + batch_.duplicate > 0);
   }
 
   /// Online filter: nothing is held back.
