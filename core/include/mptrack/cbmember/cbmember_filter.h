@@ -166,8 +166,23 @@ class CbMemberFilter {
     clutter_.predict();
   }
 
+  // The CBMeMBer update (seed 001 Sec. 4.5, Appendix B; docs/algorithms/
+  // cbmember.md §Update): legacy (missed) Bernoullis,
+  // then one measurement-updated Bernoulli per valid measurement.
   void update() {
     const std::size_t nt = pred_.size();
+    linearize_predicted(nt);
+    upd_.clear();
+    push_legacy_tracks(nt);
+    for (std::size_t i = 0; i < batch_.n; ++i) {
+      clutter_prob_[i] = T(0);
+      if (batch_.valid[i]) update_with_measurement(i, nt);
+    }
+  }
+
+  // Linearised measurement model and detection probability of every
+  // predicted component; pd_[t] is the Bernoulli's mixture pd.
+  void linearize_predicted(std::size_t nt) {
     for (std::size_t t = 0; t < nt; ++t) {
       Track& tr = pred_[t];
       if (tr.r > kMaxExistence) tr.r = kMaxExistence;
@@ -178,8 +193,10 @@ class CbMemberFilter {
       }
       pd_[t] = rfs::clamp_probability(pd);
     }
-    upd_.clear();
-    // Legacy (missed) Bernoullis.
+  }
+
+  // Legacy Bernoullis: r (1 - pd) / (1 - r pd), components reweighted by (1 - pd_j).
+  void push_legacy_tracks(std::size_t nt) {
     for (std::size_t t = 0; t < nt; ++t) {
       const Track& tr = pred_[t];
       Track l;
@@ -192,72 +209,90 @@ class CbMemberFilter {
       }
       push_track(l);
     }
-    // Measurement-updated Bernoullis.
-    for (std::size_t i = 0; i < batch_.n; ++i) {
-      clutter_prob_[i] = T(0);
-      if (!batch_.valid[i]) continue;
-      rfs::LogSum<T> num;
-      rfs::LogSum<T> den;
-      std::size_t best = nt;
-      T best_l = T(0);
-      rfs::Vec2<T> v;
-      T lq = T(0);
-      for (std::size_t t = 0; t < nt; ++t) {
-        const Track& tr = pred_[t];
-        rfs::LogSum<T> rho;
-        for (std::size_t j = 0; j < tr.comps.size(); ++j) {
-          if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
-          rho.add(dmath::dlog(tr.comps[j].weight) + lq);
-        }
-        if (!rho.any || !(tr.r > T(0))) {
-          log_rho_[t] = T(-1e30);
-          continue;
-        }
-        log_rho_[t] = rho.value();
-        const T l1mrp = dmath::dlog(T(1) - tr.r * pd_[t]);
-        const T lr = dmath::dlog(tr.r);
-        num.add(lr + dmath::dlog(T(1) - tr.r) + log_rho_[t] - T(2) * l1mrp);
-        const T ld = lr + log_rho_[t] - l1mrp;
-        den.add(ld);
-        if (best == nt || ld > best_l) {
-          best = t;
-          best_l = ld;
-        }
+  }
+
+  // Sums over the predicted Bernoullis for measurement i (log domain):
+  // numerator and denominator of the updated existence, and the Bernoulli
+  // contributing most (its label goes to the updated one). Fills log_rho_.
+  struct MeasurementSums {
+    rfs::LogSum<T> num;
+    rfs::LogSum<T> den;
+    std::size_t best = 0;
+  };
+  MeasurementSums measurement_sums(std::size_t i, std::size_t nt) {
+    MeasurementSums m;
+    m.best = nt;
+    T best_l = T(0);
+    rfs::Vec2<T> v;
+    T lq = T(0);
+    for (std::size_t t = 0; t < nt; ++t) {
+      const Track& tr = pred_[t];
+      rfs::LogSum<T> rho;
+      for (std::size_t j = 0; j < tr.comps.size(); ++j) {
+        if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
+        rho.add(dmath::dlog(tr.comps[j].weight) + lq);
       }
-      const T lk = clutter_.log_intensity(i);
-      if (!den.any) {
-        clutter_prob_[i] = T(1);
+      if (!rho.any || !(tr.r > T(0))) {
+        log_rho_[t] = T(-1e30);
         continue;
       }
-      const T ltot = rfs::log_add(lk, den.value());
-      clutter_prob_[i] = dmath::dexp(lk - ltot);
-      const T r_u = dmath::dexp(num.value() - ltot);
-      if (!(r_u >= params_.existence_prune)) continue;
-      // Components: r_t/(1-r_t) w_tj q_tj(z), normalised.
-      raw_.clear();
-      rfs::LogSum<T> total;
-      for (std::size_t t = 0; t < nt; ++t) {
-        const Track& tr = pred_[t];
-        if (!(log_rho_[t] > T(-1e29))) continue;
-        const T lodds = dmath::dlog(tr.r) - dmath::dlog(T(1) - tr.r);
-        for (std::size_t j = 0; j < tr.comps.size(); ++j) {
-          if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
-          Component u = rfs::updated_component(tr.comps[j], lin_[t][j], batch_, i, v, params_);
-          u.weight = lodds + dmath::dlog(tr.comps[j].weight) + lq;  // log for now
-          total.add(u.weight);
-          push_raw(u);
-        }
+      log_rho_[t] = rho.value();
+      const T l1mrp = dmath::dlog(T(1) - tr.r * pd_[t]);
+      const T lr = dmath::dlog(tr.r);
+      m.num.add(lr + dmath::dlog(T(1) - tr.r) + log_rho_[t] - T(2) * l1mrp);
+      const T ld = lr + log_rho_[t] - l1mrp;
+      m.den.add(ld);
+      if (m.best == nt || ld > best_l) {
+        m.best = t;
+        best_l = ld;
       }
-      const T lt = total.value();
-      for (Component& c : raw_) c.weight = dmath::dexp(c.weight - lt);
-      Track u;
-      u.r = r_u < kMaxExistence ? r_u : kMaxExistence;
-      u.label = pred_[best].label;
-      counters_.track_cap_hits +=
-          rfs::reduce_mixture(raw_, u.comps, reduction_, raw_scratch_, counters_.numerical_repairs);
-      renormalize(u);
-      push_track(u);
     }
+    return m;
+  }
+
+  // The measurement-updated Bernoulli of measurement i (and its clutter
+  // probability, which drives the clutter estimator).
+  void update_with_measurement(std::size_t i, std::size_t nt) {
+    const MeasurementSums m = measurement_sums(i, nt);
+    const T lk = clutter_.log_intensity(i);
+    if (!m.den.any) {
+      clutter_prob_[i] = T(1);
+      return;
+    }
+    const T ltot = rfs::log_add(lk, m.den.value());
+    clutter_prob_[i] = dmath::dexp(lk - ltot);
+    const T r_u = dmath::dexp(m.num.value() - ltot);
+    if (!(r_u >= params_.existence_prune)) return;
+    collect_updated_components(i, nt);
+    Track u;
+    u.r = r_u < kMaxExistence ? r_u : kMaxExistence;
+    u.label = pred_[m.best].label;
+    counters_.track_cap_hits +=
+        rfs::reduce_mixture(raw_, u.comps, reduction_, raw_scratch_, counters_.numerical_repairs);
+    renormalize(u);
+    push_track(u);
+  }
+
+  // Components r_t/(1-r_t) w_tj q_tj(z), normalised, into raw_.
+  void collect_updated_components(std::size_t i, std::size_t nt) {
+    raw_.clear();
+    rfs::LogSum<T> total;
+    rfs::Vec2<T> v;
+    T lq = T(0);
+    for (std::size_t t = 0; t < nt; ++t) {
+      const Track& tr = pred_[t];
+      if (!(log_rho_[t] > T(-1e29))) continue;
+      const T lodds = dmath::dlog(tr.r) - dmath::dlog(T(1) - tr.r);
+      for (std::size_t j = 0; j < tr.comps.size(); ++j) {
+        if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
+        Component u = rfs::updated_component(tr.comps[j], lin_[t][j], batch_, i, v, params_);
+        u.weight = lodds + dmath::dlog(tr.comps[j].weight) + lq;  // log for now
+        total.add(u.weight);
+        push_raw(u);
+      }
+    }
+    const T lt = total.value();
+    for (Component& c : raw_) c.weight = dmath::dexp(c.weight - lt);
   }
 
   static void renormalize(Track& t) {
@@ -267,9 +302,11 @@ class CbMemberFilter {
     for (Component& c : t.comps) c.weight /= s;
   }
 
-  // raw_ holds log-weights while collecting: keep the kMaxRawComponents largest.
+  // raw_ holds log-weights while collecting: keep the kMaxRawComponents
+  // largest; the one left out is counted (track_cap_hits).
   void push_raw(const Component& c) {
     if (raw_.push_back(c) == Status::kOk) return;
+    ++counters_.track_cap_hits;
     std::size_t lightest = 0;
     for (std::size_t k = 1; k < raw_.size(); ++k) {
       if (raw_[k].weight < raw_[lightest].weight) lightest = k;
