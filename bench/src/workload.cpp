@@ -29,8 +29,9 @@ scenario::ScenarioSpec workload_spec(const Workload& w, std::uint32_t num_scans)
   s.num_scans = num_scans;
   s.eval_first_scan = 1;
   s.eval_last_scan = num_scans;
-  // Region, noise, threshold and scan period: seed 000 defaults (spec 4.1).
-  constexpr double kSnr = 10.0;  // P_D = exp(-d^2 / (1 + snr)) = 0.955 at d = 0.715 (spec 2.5)
+  // Region, noise, threshold and scan period: seed 000 defaults (seed 000 Sec. IV-A).
+  constexpr double kSnr = 10.0;  // P_D = exp(-d^2 / (1 + snr)) = 0.955 at d = 0.715
+                                 // (docs/algorithms/models.md §Detection probability)
   constexpr double kPd = 0.955;
   // Targets on an 8 x 8 (range, azimuth) grid: 4 km x 5.5 deg cells, far
   // apart compared with the 20 m / 0.6 deg noise, so the association load

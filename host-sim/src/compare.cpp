@@ -30,10 +30,10 @@ std::string hex64(std::uint64_t h) {
 
 void default_ospa(const scenario::ScenarioSpec& spec, double& cutoff_m, double& order) {
   if (spec.space == scenario::MeasurementSpace::kCartesian) {
-    cutoff_m = 300.0;  // seed 001 section 6: OSPA p = 1, c = 300 m
+    cutoff_m = 300.0;  // seed 001 Sec. 5: OSPA p = 1, c = 300 m
     order = 1.0;
   } else {
-    cutoff_m = kOspaCutoff_m;  // seed 000 spec 5.1
+    cutoff_m = kOspaCutoff_m;  // seed 000 Sec. IV-A
     order = kOspaOrder;
   }
 }

@@ -55,7 +55,7 @@ struct CompareResult : SummaryHeader {
 };
 
 /// OSPA/GOSPA (c, p) of a scenario: seed 001 (Cartesian) c = 300 m, p = 1
-/// (seed 001 section 6); otherwise seed 000 spec 5.1, c = 631 m, p = 2.
+/// (seed 001 Sec. 5); otherwise seed 000 Sec. IV-A, c = 631 m, p = 2.
 void default_ospa(const scenario::ScenarioSpec& spec, double& cutoff_m, double& order);
 
 /// Default tracker list: the built trackers among mfbp, mfbp-filter, gmphd,

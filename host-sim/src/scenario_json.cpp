@@ -155,7 +155,7 @@ TargetSpec target(const json& v, const std::string& path) {
 }
 
 // Optional "amplitude": {"model": "weibull", "shape": b, "scale": sigma0}
-// (seed 001 spec 3.4); it replaces "cnr" and "swerling".
+// (docs/algorithms/models.md §Amplitude likelihoods); it replaces "cnr" and "swerling".
 void clutter_amplitude(const json& v, const std::string& path, ClutterSpec& c) {
   const std::string pa = join(path, "amplitude");
   const json& a = member(v, path, "amplitude");

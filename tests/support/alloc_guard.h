@@ -1,4 +1,4 @@
-// No-allocation guard for tests (developers' guide rule 1).
+// No-allocation guard for tests (README.md §Conventions a firmware engineer can rely on).
 //
 // The test support library replaces global operator new/delete (all forms)
 // and, on glibc, malloc/calloc/realloc, with versions that count calls made

@@ -1,5 +1,5 @@
 // Raw-ADC synthesizer (host-sim/adc): echoes land where the front end says,
-// noise has the calibrated power, the SNR table of seed 004 spec 1.6.
+// noise has the calibrated power, the SNR table of docs/algorithms/scenarios.md §Seed 004.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -74,8 +74,9 @@ TEST_CASE("adc: a single echo lands at its range bin and angle bin after the fro
   CHECK(best_g == 10);
   CHECK(best_a == 40);
 
-  // Matched-filter peak of one channel = echo amplitude x L (rectangular
-  // window, spec 2.1): |alpha| = sqrt(0.05 m^2) * A lambda / ((4 pi)^1.5 r^2).
+  // Matched-filter peak of one channel = echo amplitude x L (rectangular window;
+  // docs/algorithms/frontend.md §Range matched filter):
+  // |alpha| = sqrt(0.05 m^2) * A lambda / ((4 pi)^1.5 r^2).
   const double lambda = kC / 10e9;
   const double four_pi = 4.0 * M_PI;
   const double amp = std::sqrt(0.05) * 0.53 * lambda / (four_pi * std::sqrt(four_pi) * r * r);
@@ -148,7 +149,8 @@ TEST_CASE("adc: thermal noise power per sample is k_b T0 f_s (model A) or k_b T0
 TEST_CASE("adc: mean component SNR reproduces the seed 004 table (model A)") {
   adc::AdcScenario s;
   adc::builtin_adc_scenario("seed004-drones", s);
-  // Spec 1.6 Table 1: 37.1 dB at 10 m, 18.0 dB at 30 m, 1.0 dB at 80 m, -2.9 dB at 100 m.
+  // docs/algorithms/scenarios.md §Seed 004: 37.1 dB at 10 m, 18.0 dB at 30 m, 1.0 dB at 80 m,
+  // -2.9 dB at 100 m.
   const double db10 = 10.0 * std::log10(adc::mean_component_snr(s, 10.0, 0.05));
   const double db30 = 10.0 * std::log10(adc::mean_component_snr(s, 30.0, 0.05));
   const double db80 = 10.0 * std::log10(adc::mean_component_snr(s, 80.0, 0.05));

@@ -1,4 +1,5 @@
-// Seed 004 drone trajectories (spec 5.2) at hand-computed frames.
+// Seed 004 drone trajectories (docs/algorithms/scenarios.md §Seed 004) at hand-computed
+// frames.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -38,7 +39,7 @@ TEST_CASE("adc trajectory: tracks 1 and 2 cross within 0.21 m at frame 22") {
   const double d = std::hypot(a.x - b.x, a.y - b.y);
   CHECK(d == doctest::Approx(21.0 - 4.2 * kV));  // 0.21106 m
   CHECK(d < 0.53);                                       // paper: "within 53 cm"
-  // Separations at n = 20 and 24 (spec 5.2: 2.19 and 1.68 m).
+  // Separations at n = 20 and 24 (docs/algorithms/scenarios.md §Seed 004: 2.19 and 1.68 m).
   const auto sep = [&](std::uint32_t n) {
     const adc::DroneState u = adc::drone_state_at(drone(s, 1), n, 0.1);
     const adc::DroneState v = adc::drone_state_at(drone(s, 2), n, 0.1);
@@ -83,8 +84,8 @@ TEST_CASE("adc trajectory: track 3 is born at (15, 20) at frame 50 and manoeuvre
   const adc::DroneState f = adc::drone_state_at(d3, 95, 0.1);
   CHECK(f.x == doctest::Approx(e.x - 1.5 * 4.330127018922193));
   CHECK(f.y == doctest::Approx(e.y + 1.5 * 2.5));
-  // Spec 5.2 quotes r in 21.9..26.5 m; its ramp discretisation differs from
-  // ours ([R]) by up to 0.3 m at the far end of the turn.
+  // A continuous-time ramp gives r in 21.9..26.5 m; ours is discrete and differs by up
+  // to 0.3 m at the far end of the turn (docs/algorithms/scenarios.md §Seed 004).
   for (std::uint32_t n = 50; n <= 95; ++n) {
     const adc::DroneState x = adc::drone_state_at(d3, n, 0.1);
     const double r = std::hypot(x.x, x.y);

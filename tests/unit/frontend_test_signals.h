@@ -67,9 +67,10 @@ inline void chirp_sample(const mptrack::frontend::FrontEndParams& p, double i, d
   mptrack::dmath::dsincos(mptrack::dmath::kPi<double> * kappa * t * t, im, re);
 }
 
-/// Adds targets (and complex white noise of per-sample variance noise_var,
-/// if > 0) to a float cube: the seed 004 signal model with the Doppler
-/// extension (spec 1.4-1.5), far field, stop-and-hop within a chirp.
+/// Adds targets (and complex white noise of per-sample variance noise_var, if > 0) to a
+/// float cube: the seed 004 signal model with the Doppler extension
+/// (docs/algorithms/frontend.md §Signal model, §Doppler), far field, stop-and-hop within a
+/// chirp.
 template <class Caps>
 void synthesize(const mptrack::frontend::FrontEndParams& p, const SynthTarget* targets,
                 std::size_t num_targets, double noise_var, std::uint64_t seed,

@@ -1,4 +1,4 @@
-// Behaviour of the GNN + CV-EKF baseline (seed 004 spec 2.5) on small
+// Behaviour of the GNN + CV-EKF baseline (seed 004 Sec. V-A; docs/algorithms/gnn.md) on small
 // hand-built scenarios. Measurements are made from Cartesian truth with
 // mptrack::dmath (so the inputs are the same bits on every target) and, where
 // noisy, with a deterministic LCG + Irwin-Hall Gaussian written here.
@@ -155,7 +155,7 @@ TEST_CASE("GNN: a single clutter point lives as a tentative track for 3 scans") 
 }
 
 TEST_CASE("GNN: two crossing targets keep their IDs with moderate noise") {
-  // Seed 004 tracks 1 and 2 (spec 5.2): they cross at scan ~21 with a
+  // Seed 004 tracks 1 and 2 (seed 004 Sec. V-A): they cross at scan ~21 with a
   // minimum separation of ~0.2 m, at right angles.
   Tracker::Params p;
   p.sigma_range_m = 0.1f;

@@ -20,9 +20,9 @@
 using namespace mptrack;
 using namespace mptrack::mfbp;
 
-TEST_CASE("mfbp Pd Swerling I equals exp(-d^2/(1+snr)) and matches the spec table") {
+TEST_CASE("mfbp Pd Swerling I equals exp(-d^2/(1+snr)) and matches hand-computed values") {
   const double d = 0.715;
-  // spec 2.4 table (d = 0.715, n = 1): snr 0 -> 0.600, 1 -> 0.774, 10/3 -> 0.889, 30 -> 0.984
+  // exp(-d^2 / (1 + snr)) by hand (d = 0.715, n = 1): snr 0 -> 0.600, 1 -> 0.774, 10/3 -> 0.889, 30 -> 0.984
   CHECK(detection_probability(1.0 + 0.0, d, 1, PdModel::kExact) == doctest::Approx(0.600).epsilon(0.002));
   CHECK(detection_probability(1.0 + 1.0, d, 1, PdModel::kExact) == doctest::Approx(0.774).epsilon(0.002));
   CHECK(detection_probability(1.0 + 10.0 / 3.0, d, 1, PdModel::kExact) == doctest::Approx(0.889).epsilon(0.002));
@@ -33,7 +33,8 @@ TEST_CASE("mfbp Pd Swerling I equals exp(-d^2/(1+snr)) and matches the spec tabl
 
 TEST_CASE("mfbp Pd Swerling III exact Gamma(2) tail vs the paper approximation") {
   const double d = 0.715;
-  // spec 2.4: at SNR 10/3 the paper gives 0.790, the exact form 0.976.
+  // docs/algorithms/models.md §Detection probability: at SNR 10/3 the paper gives 0.790,
+  // the exact form 0.976.
   CHECK(detection_probability(1.0 + 10.0 / 3.0, d, 2, PdModel::kExact) == doctest::Approx(0.976).epsilon(0.002));
   CHECK(detection_probability(1.0 + 10.0 / 3.0, d, 2, PdModel::kPaper) == doctest::Approx(0.790).epsilon(0.002));
   // float agrees with double
@@ -145,7 +146,8 @@ struct Marginals {
   std::vector<double> c0;              // nc
 };
 
-// Exact marginals by enumerating every feasible association (spec 7.1).
+// Exact marginals by enumerating every feasible association (the brute-force reference
+// the BP marginals are checked against).
 Marginals enumerate(const BpCase& bc) {
   Marginals m;
   m.t.assign(bc.nt, std::vector<double>(bc.nm + 1, 0.0));
@@ -392,7 +394,8 @@ TEST_CASE("mfbp Normal-Wishart update equals Bishop 10.60-10.63") {
   CHECK(post.w_inv(0, 0) == doctest::Approx(winv(0, 0)).epsilon(1e-10));
   CHECK(post.w_inv(0, 1) == doctest::Approx(winv(0, 1)).epsilon(1e-8));
   CHECK(post.w_inv(1, 1) == doctest::Approx(winv(1, 1)).epsilon(1e-10));
-  // Mean-preserving forgetting keeps E[D^-1] (spec 2.8, A9).
+  // Mean-preserving forgetting keeps E[D^-1] (docs/algorithms/mfbp.md §Departures from the
+  // paper).
   const auto pred = post.predicted(0.99, NwForgetting::kMeanPreserving);
   CHECK(pred.expected_covariance()(0, 0) == doctest::Approx(post.expected_covariance()(0, 0)).epsilon(1e-12));
 }

@@ -1,10 +1,10 @@
-// MF-BP [impl] kinematics that are not in the paper (mfbp_params.h):
-// unresolved-pair coupling (unresolved_chi2, unresolved_pooling) and the
-// manoeuvre-adaptive process noise (manoeuvre_noise_var_max,
-// manoeuvre_fading). Online filter (window 1) on small deterministic
-// scenarios in seed 000's geometry (sigma_r 20 m, sigma_az 0.6 deg, so
-// ~210 m cross-range noise at 20 km), no clutter. Each claim is checked
-// against the same tracker with the switch off, on the same scans.
+// MF-BP kinematics of ours that are not in the paper (mfbp_params.h;
+// docs/algorithms/mfbp.md §Departures from the paper): unresolved-pair coupling
+// (unresolved_chi2, unresolved_pooling) and the manoeuvre-adaptive process noise
+// (manoeuvre_noise_var_max, manoeuvre_fading). Online filter (window 1) on small
+// deterministic scenarios in seed 000's geometry (sigma_r 20 m, sigma_az 0.6 deg, so ~210 m
+// cross-range noise at 20 km), no clutter. Each claim is checked against the same tracker
+// with the switch off, on the same scans.
 #include <doctest/doctest.h>
 
 #include <cmath>

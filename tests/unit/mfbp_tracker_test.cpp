@@ -287,7 +287,7 @@ TEST_CASE("mfbp float and double runs agree in OSPA") {
 
 namespace {
 // The scenario plus a Gaussian clutter blob (20 points per scan around
-// (24 km, 0.55 rad), sd (1 km, 3 deg), CNR 20/3): spec 4.3 component shape.
+// (24 km, 0.55 rad), sd (1 km, 3 deg), CNR 20/3): seed 000 Table III component shape.
 template <class Caps>
 void add_blob(mfbp_test::Lcg& rng, Scan<float, Caps::kMaxMeasurements>& scan, std::size_t count) {
   for (std::size_t b = 0; b < count; ++b) {

@@ -1,5 +1,6 @@
 // Scenario generator: reproducibility, hand-computed seed 000 trajectories
-// (spec 4.1), clutter time variation (P104), measurement bookkeeping.
+// (docs/algorithms/scenarios.md §Seed 000), clutter time variation (seed 000 eq. (104)),
+// measurement bookkeeping.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -74,7 +75,7 @@ TEST_CASE("generator: a scan does not depend on which scans were generated befor
   CHECK(same_bits(alone, after));
 }
 
-TEST_CASE("generator: Targets 1 and 2 follow the spec 4.1 default truth") {
+TEST_CASE("generator: Targets 1 and 2 follow the default truth of docs/algorithms/scenarios.md") {
   const ScenarioSpec s = builtin("seed000-s2");
   const TargetSpec& t1 = target(s, 1);
   const TargetSpec& t2 = target(s, 2);
@@ -138,7 +139,7 @@ TEST_CASE("generator: a coordinated turn of 90 degrees rotates the velocity and 
   CHECK(x.vy == doctest::Approx(100.0).epsilon(1e-12));
 }
 
-TEST_CASE("generator: S3 clutter follows P104 (count x1 -> x1.5 -> x1, covariance 1/3 -> 4/3)") {
+TEST_CASE("generator: S3 clutter follows seed 000 eq. (104) (count x1 -> x1.5 -> x1, covariance 1/3 -> 4/3)") {
   const ScenarioSpec s3 = builtin("seed000-s3");
   const ClutterSpec& c1 = s3.clutter[1];  // 20 points, [130, 170], diag(1 km, 3 deg)^2
   REQUIRE(c1.id == 1);

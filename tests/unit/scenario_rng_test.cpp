@@ -94,7 +94,8 @@ TEST_CASE("rng: Poisson mean and variance equal lambda, below and above the 30 c
 }
 
 TEST_CASE("rng: Gamma(n, scale) power has mean n*scale (Swerling I: 1 + snr)") {
-  // Swerling I, snr 10/3: u ~ Gamma(1, 1 + snr), E[u] = 1 + snr = 4.333 (spec 2.5).
+  // Swerling I, snr 10/3: u ~ Gamma(1, 1 + snr), E[u] = 1 + snr = 4.333
+  // (docs/algorithms/models.md §Detection probability).
   Rng r(6);
   const double vs = 1.0 + 10.0 / 3.0;
   const Moments m1 = moments(kN, [&] { return r.gamma_int(1, vs); });
@@ -106,7 +107,7 @@ TEST_CASE("rng: Gamma(n, scale) power has mean n*scale (Swerling I: 1 + snr)") {
   CHECK(std::fabs(m3.var / (vs * vs / 2.0) - 1.0) < 0.03);
 }
 
-TEST_CASE("rng: detection rates of thresholded power equal the exact Pd (spec 2.4 table)") {
+TEST_CASE("rng: detection rates of thresholded power equal the exact Pd (docs/algorithms/models.md)") {
   const double d2 = 0.715 * 0.715;
   const double vs = 1.0 + 10.0 / 3.0;
   Rng r(8);
@@ -115,7 +116,8 @@ TEST_CASE("rng: detection rates of thresholded power equal the exact Pd (spec 2.
     if (r.gamma_int(1, vs) > d2) ++hits1;
     if (r.gamma_int(2, vs / 2.0) > d2) ++hits3;
   }
-  // Spec 2.4: Pd = 0.889 (Swerling I, snr 10/3) and 0.976 (Swerling III).
+  // Exact Pd (docs/algorithms/models.md §Detection probability): 0.889 (Swerling I,
+  // snr 10/3) and 0.976 (Swerling III).
   const double pd1 = std::exp(-d2 / vs);
   const double x = 2.0 * d2 / vs;
   const double pd3 = std::exp(-x) * (1.0 + x);

@@ -55,7 +55,7 @@ TEST_CASE("compare: a tiny seed001 run gives one row per tracker, in order, with
   const CompareResult r = run_compare(cfg);
   REQUIRE(r.rows.size() == 4);
   for (std::size_t i = 0; i < 4; ++i) CHECK(r.rows[i].tracker == cfg.trackers[i]);
-  CHECK(r.ospa_order == 1.0);       // seed 001 section 6
+  CHECK(r.ospa_order == 1.0);       // seed 001 Sec. 5
   CHECK(r.ospa_cutoff_m == 300.0);
 
   std::ifstream in(cfg.out_dir + "/compare.json");

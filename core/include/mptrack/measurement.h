@@ -1,5 +1,6 @@
 // Measurements and scans: what a detector (CFAR + peak extraction) hands
-// to a tracker. Seed 000 spec section 1.4: Y_j = (y_j, m_j), y = (r, theta).
+// to a tracker. docs/algorithms/README.md §Notation and units: Y_j = (y_j, m_j),
+// y = (r, theta).
 #pragma once
 
 #include <cstddef>

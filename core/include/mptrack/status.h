@@ -1,6 +1,7 @@
 // Status codes returned by every core entry point that can fail.
 //
-// Errors are values (developers' guide, rule 3): no exceptions, no errno.
+// Errors are values (README.md §Conventions a firmware engineer can rely on): no
+// exceptions, no errno.
 // The enum itself is [[nodiscard]], so ignoring a returned Status is a
 // compiler warning (an error under -Werror) at every call site.
 #pragma once

@@ -23,7 +23,8 @@
 
 namespace mptrack {
 
-/// One track at one finalised scan. State order [px, vx, py, vy] (seed 000 spec 1.1).
+/// One track at one finalised scan. State order [px, vx, py, vy]
+/// (docs/algorithms/README.md §Notation and units).
 template <class T>
 struct TrackReport {
   std::uint32_t id = 0;                   ///< stable across scans; never reused within a run
@@ -39,7 +40,7 @@ struct TrackReport {
 template <class T>
 struct ClutterReport {
   std::uint32_t id = 0;
-  bool uniform = false;                   ///< the uniform component (spec tau = 0)
+  bool uniform = false;                   ///< the uniform component (tau = 0 in seed 000)
   Eigen::Matrix<T, 2, 1> mean = Eigen::Matrix<T, 2, 1>::Zero();        ///< [range m, azimuth rad]
   Eigen::Matrix<T, 2, 2> covariance = Eigen::Matrix<T, 2, 2>::Zero();  ///< spread [m^2, m rad; ., rad^2]
   T expected_count = T(0);                ///< expected clutter measurements per scan [-]

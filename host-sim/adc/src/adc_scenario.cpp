@@ -188,7 +188,7 @@ bool operator==(const AdcScenario& a, const AdcScenario& b) {
 
 namespace {
 
-// 7 m/s at 45 deg and 5 m/s at 150 deg (spec 5.2), to 16 digits so the JSON
+// 7 m/s at 45 deg and 5 m/s at 150 deg (seed 004 Sec. V-A), to 16 digits so the JSON
 // files hold the same doubles.
 constexpr double kV45 = 4.949747468305833;
 constexpr double kV30x = 4.330127018922193;

@@ -87,7 +87,8 @@ void FrameSynthesizer::add_echo(AdcCube& cube, double range_m, double bearing_ra
                                 double amp_im) const {
   const double fs = spec_.radar.sample_rate_hz;
   const double tau = 2.0 * range_m / frontend::kSpeedOfLight_mps;
-  // Steering phases, centred reference (spec 1.2): 2 pi d (v - 4) sin(theta).
+  // Steering phases, centred reference (docs/algorithms/scenarios.md §Seed 004):
+  // 2 pi d (v - 4) sin(theta).
   const double u = dmath::dsin(bearing_rad);
   double a_re[kNumVirtual];
   double a_im[kNumVirtual];

@@ -22,7 +22,8 @@ DroneState drone_state_at(const DroneSpec& d, std::uint32_t frame, double dt) {
   double leg_vx = s.vx, leg_vy = s.vy;
   std::uint32_t in_leg = 0;
   while (done < steps) {
-    // p_{n+1} = p_n + v_n dt (spec 5.2 [R]), then v_{n+1} from the schedule.
+    // p_{n+1} = p_n + v_n dt (docs/algorithms/scenarios.md §Seed 004), then v_{n+1} from
+    // the schedule.
     s.x += s.vx * dt;
     s.y += s.vy * dt;
     ++done;

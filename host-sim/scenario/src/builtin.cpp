@@ -1,6 +1,6 @@
-// Seed 000 scenarios (spec 4.1-4.4). [impl] choices are the spec's defaults:
-// region r in [10, 50] km x az in [10, 60] deg (A20), Poisson clutter (A21),
-// T1/T2 piecewise truth (A19), Swerling I for S2/S3 (A30), uniform CNR 1 (A17).
+// Seed 000 scenarios (seed 000 Sec. IV-A). Values the paper leaves open
+// (docs/algorithms/scenarios.md §Seed 000): region r in [10, 50] km x az in [10, 60] deg,
+// Poisson clutter, T1/T2 piecewise truth, Swerling I for S2/S3, uniform CNR 1.
 #include "mptrack/scenario/builtin.h"
 
 namespace mptrack::scenario {
@@ -36,10 +36,10 @@ TargetSpec target(std::uint32_t id, double px, double vx, double py, double vy, 
   return t;
 }
 
-// Targets 1 and 2 (spec 4.1 default truth, A19): CV for 25 s, then a constant
-// a_y for 121.875 s until v_y = 0 (|a_y| = 40 / 121.875 m/s^2), then CV,
-// parallel at y = 10027.5 m and 10007.5 m. The set_velocity segment pins v_y
-// to exactly 0 so rounding in a_y cannot leave a drift.
+// Targets 1 and 2 (default truth: docs/algorithms/scenarios.md §Seed 000): CV for 25 s,
+// then a constant a_y for 121.875 s until v_y = 0 (|a_y| = 40 / 121.875 m/s^2), then CV,
+// parallel at y = 10027.5 m and 10007.5 m. The set_velocity segment pins v_y to exactly 0
+// so rounding in a_y cannot leave a drift.
 constexpr double kManeuverStart_s = 25.0;
 constexpr double kManeuverEnd_s = 146.875;
 constexpr double kAy = 40.0 / 121.875;
@@ -53,7 +53,7 @@ void add_targets_1_2(ScenarioSpec& s, double snr1, double snr2) {
   s.targets.push_back(t2);
 }
 
-// Targets 3-5: constant velocity, crossing near k = 170.5 (spec 4.1).
+// Targets 3-5: constant velocity, crossing near k = 170.5 (seed 000 Table II).
 void add_targets_3_5(ScenarioSpec& s) {
   s.targets.push_back(target(3, 28000.0, 40.0, 20543.0, -12.0, 10.0 / 3.0));
   s.targets.push_back(target(4, 28000.0, 40.0, 18000.0, 0.0, 50.0 / 3.0));
@@ -111,8 +111,8 @@ void add_table3_components(ScenarioSpec& s, bool time_varying) {
   if (time_varying) {
     for (ClutterSpec& c : s.clutter) {
       if (c.uniform) continue;
-      c.variation.count_sin_amplitude = 0.5;     // P104: lambda = (1 + sin(pi f)/2) lambda_0
-      c.variation.cov_scale_start = 1.0 / 3.0;   // P104: Cov = (1/3 + f) Cov_0
+      c.variation.count_sin_amplitude = 0.5;     // seed 000 eq. (104): lambda = (1 + sin(pi f)/2) lambda_0
+      c.variation.cov_scale_start = 1.0 / 3.0;   // seed 000 eq. (104): Cov = (1/3 + f) Cov_0
       c.variation.cov_scale_end = 4.0 / 3.0;
     }
   }
@@ -142,14 +142,14 @@ ScenarioSpec make_s2() {
 ScenarioSpec make_s3() {
   ScenarioSpec s = base("seed000-s3",
                         "Seed 000 Scenario 3 (Table IV): as Scenario 2, with time-varying non-uniform clutter "
-                        "(P104: count (1 + sin(pi f)/2) lambda_0, covariance (1/3 + f) Cov_0).");
+                        "(seed 000 eq. (104): count (1 + sin(pi f)/2) lambda_0, covariance (1/3 + f) Cov_0).");
   add_targets_1_2(s, 10.0 / 3.0, 50.0 / 3.0);
   add_targets_3_5(s);
   add_table3_components(s, true);
   return s;
 }
 
-// ---- Seed 001 S1-S5 (seed 001 spec section 6) ----------------------------
+// ---- Seed 001 S1-S5 (seed 001 Sec. 5) ------------------------------------
 // Normalised amplitudes (noise power 1): the paper's tau = 2.146 at sigma_n = 2
 // is d = sqrt(ln 10) = 1.51743 here, so Rayleigh noise crosses it with P_FA =
 // 0.1 exactly, and 20 dB targets (SNR 100, Swerling I) with P_D = 0.9775.
@@ -158,12 +158,13 @@ ScenarioSpec make_s3() {
 constexpr std::uint32_t kSeed001Scans = 50;
 constexpr double kSeed001Threshold = 1.5174271293851465;  // sqrt(ln 10)
 constexpr double kSeed001Snr = 100.0;                      // 20 dB
-// Weibull b = 0.8 with P_FA = exp(-d^1.6 / sigma0) = 0.390 (spec 3.7 [impl],
-// sigma0 = 3.60 in the paper's units is 3.60 / 2^0.8 = 2.07 normalised).
+// Weibull b = 0.8 with P_FA = exp(-d^1.6 / sigma0) = 0.390 (docs/algorithms/scenarios.md
+// §Seed 001: sigma0 = 3.60 in the paper's units is 3.60 / 2^0.8 = 2.07 normalised).
 constexpr double kWeibullShape = 0.8;
 constexpr double kWeibullScale = 2.07;
 
-// 12 CV targets [impl spec 6]: three born at each of scans 1, 10, 20, 30, each
+// 12 CV targets (docs/algorithms/scenarios.md §Seed 001): three born at each of
+// scans 1, 10, 20, 30, each
 // at one of the paper's six birth means, 10-30 m/s, inside the region until
 // scan 50; targets 1 and 5 die together after scan 40 (the paper's two
 // disappearances at t = 40 s).

@@ -1,4 +1,5 @@
-// Scenario generator (seed 000 spec 4.2); the draw order is documented in generator.h.
+// Scenario generator (docs/algorithms/scenarios.md §Measurement generation); the draw order
+// is documented in generator.h.
 #include "mptrack/scenario/generator.h"
 
 #include <cmath>
@@ -76,7 +77,7 @@ KinematicState target_state_at(const ScenarioSpec& spec, const TargetSpec& targe
 }
 
 ClutterAtScan clutter_at_scan(const ScenarioSpec& spec, const ClutterSpec& c, std::uint32_t k) {
-  // P104 time variation, f = (k - k_start) / (k_end - k_start).
+  // seed 000 eq. (104) time variation, f = (k - k_start) / (k_end - k_start).
   const double span = static_cast<double>(c.death_scan) - static_cast<double>(c.birth_scan);
   const double age = static_cast<double>(k) - static_cast<double>(c.birth_scan);
   const double f = span > 0.0 ? age / span : 0.0;
@@ -154,7 +155,8 @@ Status Generator::generate(std::uint32_t k, SimScan& out) const {
   const double sigma_az = deg_to_rad(spec_.sigma_azimuth_deg);
   const double t_k = scan_time_s(spec_, k);
 
-  // 1. Targets: draw the power, threshold it (spec 4.2: exact P_D for Gamma(n)).
+  // 1. Targets: draw the power, threshold it (exact P_D for Gamma(n):
+  // docs/algorithms/scenarios.md §Measurement generation).
   for (const TargetSpec& tgt : spec_.targets) {
     if (!alive(tgt.birth_scan, tgt.death_scan, k)) continue;
     TruthState truth;
@@ -195,7 +197,8 @@ Status Generator::generate(std::uint32_t k, SimScan& out) const {
     out.truth.push_back(truth);
   }
 
-  // 2. Clutter: Poisson counts (A21), positions, truncated-Gamma amplitudes.
+  // 2. Clutter: Poisson counts (docs/algorithms/scenarios.md §Seed 000), positions,
+  // truncated-Gamma amplitudes.
   for (const ClutterSpec& c : spec_.clutter) {
     if (!alive(c.birth_scan, c.death_scan, k)) continue;
     const ClutterAtScan p = clutter_at_scan(spec_, c, k);

@@ -103,7 +103,8 @@ double Rng::gamma_int_above(int shape, double scale, double t) {
 
 double Rng::weibull_above(double b, double sigma0, double t) {
   // With X = a^(2b), P(X > x) = exp(-x / sigma0): X is Exp(sigma0), and
-  // given X > t^(2b) the excess is again Exp(sigma0) (seed 001 spec 3.4).
+  // given X > t^(2b) the excess is again Exp(sigma0) (docs/algorithms/scenarios.md
+  // §Measurement generation).
   if (b == 1.0) return std::sqrt(t * t + sigma0 * exponential());
   const double two_b = 2.0 * b;
   const double x = dmath::dexp(two_b * dmath::dlog(t)) + sigma0 * exponential();

@@ -65,7 +65,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(CLI::IsMember({1, 3}));
   app.add_option("--snr1", o.snr1_text, "override target 1's mean SNR, linear (e.g. 10/3)");
   app.add_option("--snr2", o.snr2_text, "override target 2's mean SNR, linear (Table V: 10, 20, 30)");
-  app.add_option("--clutter-scale", o.clutter_scale, "multiply every clutter mean count (spec 4.4 sweep)")
+  app.add_option("--clutter-scale", o.clutter_scale, "multiply every clutter mean count (sweeps: docs/algorithms/scenarios.md#seed-000)")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   app.add_option("--scans", o.scans, "use only the first N scans (0 = all)");
   app.add_option("--frames", o.frames, "raw-ADC scenarios: use only the first N frames (0 = all)");

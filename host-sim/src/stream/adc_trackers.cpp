@@ -93,7 +93,7 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     p.sigma_r_m = 2.0;
     p.sigma_az_rad = scenario::deg_to_rad(4.0);
     p.amplitude_threshold = s.threshold;
-    p.swerling = 3;                   // spec 5.1: Swerling 3 drones
+    p.swerling = 3;                   // seed 004 Sec. V-A: Swerling 3 drones
     // - kinematics-only association with a fixed Pd = 0.4 (front end: a
     //   drone within 3 m in ~0.5 of drone-frames). The amplitude model
     //   predicts Pd ~ 0.95 from a drone's 15 dB SNR and therefore reads the
@@ -102,8 +102,9 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     //   0.6 / 0.5 / 0.4; Pd 0.3 is worse again);
     p.use_amplitude = false;
     p.pd_no_amplitude = 0.4;
-    p.process_noise_var = 9.0;        // (3 m/s^2)^2: track 3 turns at ~8.5 m/s^2 (spec 5.2); 3..20 flat
-    p.v_max_x_mps = 12.0;             // drones fly at 7 m/s (spec 5.2)
+    p.process_noise_var = 9.0;        // (3 m/s^2)^2: track 3 turns at ~8.5 m/s^2; 3..20 flat
+                                      // (docs/algorithms/scenarios.md §Seed 004)
+    p.v_max_x_mps = 12.0;             // drones fly at 7 m/s (docs/algorithms/scenarios.md §Seed 004)
     p.v_max_y_mps = 12.0;
     // - a clean scenario: uniform clutter at a known rate, no estimated
     //   Gaussian components (they also fit a slow drone). CFAR gives ~1.4
@@ -114,7 +115,7 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     p.uniform_cnr_prior = 1.0;
     p.clutter_cell_range_m = 8.0;     // about one range resolution cell (7.5 m)
     p.clutter_cell_az_rad = scenario::deg_to_rad(8.0);
-    // - visibility chain: spec 5.1 p_s = 0.95; a track must survive runs of
+    // - visibility chain: seed 004 Sec. V-A p_s = 0.95; a track must survive runs of
     //   resolution misses: delete after 10 low-visibility frames (1 s);
     //   birth visibility 0.7 confirms a two-point birth one frame earlier.
     p.p_survive = 0.95;
@@ -143,7 +144,7 @@ class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, Default
  public:
   std::string init(const TrackerSetup& setup) override {
     const scenario::ScenarioSpec& s = setup.spec;
-    GnnParams<double> p;  // defaults: seed 004 spec 2.5
+    GnnParams<double> p;  // defaults: seed 004 Sec. V-A; docs/algorithms/gnn.md
     p.sigma_range_m = s.sigma_range_m;
     p.sigma_azimuth_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
     p.min_range_m = s.region.range_min_m;

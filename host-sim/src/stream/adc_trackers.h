@@ -3,7 +3,7 @@
 // (10 Hz frames, metre-scale noise, a few m/s) instead of seed 000's
 // 10-50 km targets:
 //   mfbp, mfbp-filter  MF-BP smoother / online filter (seed 000 algorithm)
-//   gnn                the seed 004 detect-then-track baseline (spec 2.5:
+//   gnn                the seed 004 detect-then-track baseline (seed 004 Sec. V-A:
 //                      GNN + CV Kalman, 3-of-5 confirmation, 5-miss deletion)
 // Any other registered name (e.g. oracle) gets the generic adapter.
 #pragma once

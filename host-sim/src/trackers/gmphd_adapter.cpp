@@ -47,7 +47,7 @@ phd::FilterParams<double> params_for(const TrackerSetup& setup, const std::strin
   p.region_max1 = scenario::deg_to_rad(s.region.azimuth_max_deg);
   p.scan_period_s = s.scan_period_s;
   p.accel_std_mps2 = 1.0;            // seed 000 maneuvers reach 0.33 m/s^2 (as the gnn adapter)
-  p.birth_velocity_std_mps = 60.0;   // v_max 120 m/s / 2 (seed 000 spec 4.5)
+  p.birth_velocity_std_mps = 60.0;   // v_max 120 m/s / 2 (seed 000 Sec. IV-A)
   p.threshold = s.threshold;
   p.swerling_order = scenario_swerling(s) == 3 ? 2 : 1;
   double snr = 0.0;
@@ -67,7 +67,7 @@ phd::FilterParams<double> params_for(const TrackerSetup& setup, const std::strin
 }
 
 /// Filter params for a Cartesian (seed 001) scenario [compare engineer,
-/// additive]: the spec 6 models (CV sigma_nu 5 m/s^2, R = sigma_xy^2 I), the
+/// additive]: the seed 001 Sec. 5 models (CV sigma_nu 5 m/s^2, R = sigma_xy^2 I), the
 /// scenario's threshold, Swerling case and clutter amplitude law (b, sigma0),
 /// and as the known / prior clutter rate the scenario's total mean count
 /// spread uniformly (the fixed model knows the rate, never the hot spots).
@@ -87,7 +87,8 @@ phd::FilterParams<double> cartesian_params_for(const TrackerSetup& setup, const 
   for (const auto& t : s.targets) snr += t.snr;
   const double mean_snr = s.targets.empty() ? 100.0 : snr / static_cast<double>(s.targets.size());
   p.target_power_prior = 1.0 + mean_snr;
-  // -ki: P_D of a Swerling I target at the mean SNR, exp(-d^2 / (1 + snr)) (seed 001 spec 3.3).
+  // -ki: P_D of a Swerling I target at the mean SNR, exp(-d^2 / (1 + snr))
+  // (docs/algorithms/models.md §Detection probability).
   p.detection_prob = dmath::dexp(-s.threshold * s.threshold / (1.0 + mean_snr));
   double rate = 0.0;
   for (const auto& c : s.clutter) rate += c.mean_count * setup.clutter_scale;

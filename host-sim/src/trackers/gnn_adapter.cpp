@@ -24,7 +24,7 @@ class GnnAdapter final : public CoreTrackerAdapter<Tracker> {
     p.min_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
     p.max_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
     p.accel_std_mps2 = 1.0;           // seed 000 maneuvers reach 0.33 m/s^2
-    p.init_velocity_std_mps = 60.0;   // v_max = 120 m/s (spec 4.5) / 2
+    p.init_velocity_std_mps = 60.0;   // v_max = 120 m/s (seed 000 Sec. IV-A) / 2
     return init_tracker(p);
   }
 };

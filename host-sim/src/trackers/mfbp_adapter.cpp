@@ -1,7 +1,8 @@
-// mfbp, mfbp-filter and the seed 000 ablations (spec 5.2) on MfbpTracker<double>.
+// mfbp, mfbp-filter and the seed 000 ablations (docs/algorithms/mfbp.md §Clutter chain) on
+// MfbpTracker<double>.
 // The scenario supplies region, noise, threshold, Swerling case and scan
 // period; mfbp-kce also gets the exact clutter map of every scan (Table III
-// with lifetimes and P104 time variation), mfbp-nce the uniform rate.
+// with lifetimes and seed 000 eq. (104) time variation), mfbp-nce the uniform rate.
 #include <cstdlib>
 #include <string>
 

@@ -1,11 +1,11 @@
 // Cardinality-balanced multi-Bernoulli (CBMeMBer) filter with amplitude
-// information (IGG mixtures per Bernoulli component; seed 001 spec 5.4 and
+// information (IGG mixtures per Bernoulli component; docs/algorithms/cbmember.md and
 // Vo, Vo, Cantoni 2009, eqs. 30-37), in fixed memory.
 //
-// [impl] deviation from seed 001's robust CBMeMBer (Appendices A, B): the
-// hybrid target/clutter densities inside each Bernoulli are replaced by the
-// standard CBMeMBer with the shared Poisson clutter model of
-// phd/clutter_estimator.h (same three clutter modes as the PHD/CPHD):
+// Deviation from seed 001's robust CBMeMBer (Appendices A, B; our choice:
+// docs/algorithms/cbmember.md §Departures from the paper): the hybrid target/clutter
+// densities inside each Bernoulli are replaced by the standard CBMeMBer with the shared
+// Poisson clutter model of rfs/clutter_estimator.h (same three clutter modes as the PHD/CPHD):
 //   legacy      r_L = r (1 - P_D) / (1 - r P_D), components w (1 - P_D,j) / (1 - P_D)
 //   per z       r_U = sum_i r_i (1 - r_i) rho_i / (1 - r_i P_D,i)^2
 //                     / (kappa(z) + sum_i r_i rho_i / (1 - r_i P_D,i))

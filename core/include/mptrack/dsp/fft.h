@@ -1,9 +1,9 @@
 // Fixed-size complex FFT, float, bit-exact across targets.
 //
-// Why our own: the front end must give the same bits on x86-64, aarch64,
-// armhf and Cortex-M (developers' guide rule 2). Library FFTs choose
-// codelets and reduction orders per ISA at run time (FFTW plans, CMSIS
-// per-core kernels), so their outputs differ in the last bits.
+// Why our own: the front end must give the same bits on x86-64, aarch64, armhf and Cortex-M
+// (README.md §Conventions a firmware engineer can rely on). Library FFTs choose codelets
+// and reduction orders per ISA at run time (FFTW plans, CMSIS per-core kernels), so their
+// outputs differ in the last bits.
 //
 // Algorithm: iterative decimation in time (Cooley-Tukey), in place, with the
 // radix-2 stages fused in pairs (radix-2^2: one radix-2 stage first when

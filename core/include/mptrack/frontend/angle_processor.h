@@ -6,7 +6,7 @@
 //       B(g, d, h) = sum_v w_v x_v exp(-j 2 pi h v / N_A),   h = a - N_A/2,
 //     i.e. the matched filter against the steering vector
 //       [a(u)]_v = exp(j 2 pi (d/lambda) v u),  u = sin(theta_b),
-//     sampled at u_h = h / (N_A d/lambda) (spec 2.1 step 4: for d = lambda/2,
+//     sampled at u_h = h / (N_A d/lambda) (docs/algorithms/frontend.md §Angle: for d = lambda/2,
 //     N_A = 64, u_h = h/32). The stage stores the power map |B|^2 laid out
 //     [d][a][g] so that range lines (the CFAR axis) are contiguous. Bins with
 //     |u_h| > sin(max_abs_bearing_rad) (or > 1, invisible space) are flagged
@@ -19,7 +19,7 @@
 //     bit-exact across targets.
 //
 // Bearing convention: theta_b is measured from boresight (+y) towards the +x
-// axis along which the array lies (spec 1.1: theta = atan2(x, y)). See
+// axis along which the array lies (seed 004 eq. (1): theta = atan2(x, y)). See
 // measurement_convert.h for the mapping to Measurement::azimuth_rad.
 #pragma once
 

@@ -6,12 +6,13 @@
 //   X_{v,g}[k] = sum_c w[c] r_{c,v}[g] exp(-j 2 pi k c / N_c)
 // and stored fftshift-ed: Doppler index d = (k + N_c/2) mod N_c, so d = N_c/2
 // is zero velocity and h = d - N_c/2 in [-N_c/2, N_c/2).
-// Signal model (spec 1.5 [R] Doppler extension): chirp c of a target with
-// radial velocity v_r (positive = receding, range increasing) carries the
-// phase exp(-j 4 pi v_r c T_c / lambda), so it peaks at
+// Signal model (Doppler extension, docs/algorithms/frontend.md §Doppler): chirp c of a
+// target with radial velocity v_r (positive = receding, range increasing) carries the phase
+// exp(-j 4 pi v_r c T_c / lambda), so it peaks at
 //   h = -2 v_r T_c N_c / lambda,  i.e.  v_r(h) = -h lambda / (2 N_c T_c).
 // Unambiguous span |v_r| < lambda / (4 T_c). TDM intra-chirp Tx offsets are
-// not compensated (spec 1.3: 0.023 rad per slot at 7 m/s; documented bias).
+// not compensated (docs/algorithms/frontend.md §Doppler: 0.023 rad per slot at 7 m/s;
+// documented bias).
 //
 // With kNumChirps == 1 (seed 004) there is no FFT and no window: the stage
 // only transposes, and d = 0 is the single Doppler bin (v_r = 0).

@@ -5,7 +5,7 @@
 //   per frame:
 //     Status s = fe.process(cube, scan);      // scan: Scan<float, N>
 //
-// Pipeline (spec 2.1): RangeMatchedFilter (fast-time pulse compression) ->
+// Pipeline (docs/algorithms/frontend.md): RangeMatchedFilter (fast-time pulse compression) ->
 // DopplerProcessor (slow-time FFT when kNumChirps > 1) -> AngleProcessor
 // (FFT beamformer, power map [d][a][g]) -> detection: every cell inside the
 // range gate and the angle span that is a local maximum of the map (3x3x3

@@ -1,6 +1,6 @@
 // Angle conventions between the radar front end and the trackers.
 //
-// Seed 004 (spec 1.1) measures the bearing theta_b from the boresight (+y)
+// Seed 004 eq. (1) measures the bearing theta_b from the boresight (+y)
 // axis towards +x, theta_b = atan2(x, y), so x = r sin(theta_b) and
 // y = r cos(theta_b). Measurement::azimuth_rad (seed 000) is the usual
 // mathematical angle, counter-clockwise from +x: phi = atan2(y, x).

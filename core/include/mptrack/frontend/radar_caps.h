@@ -1,7 +1,8 @@
 // Compile-time capacity traits of the MIMO radar front end.
 //
 // A front-end caps type is a struct with the static members below; every
-// buffer of the front end is sized from it (developers' guide rule 4).
+// buffer of the front end is sized from it (README.md §Conventions a firmware engineer
+// can rely on).
 // Run-time tunables (chirp, windows, CFAR) live in FrontEndParams instead.
 #pragma once
 
@@ -11,8 +12,8 @@
 
 namespace mptrack::frontend {
 
-/// Seed 004 (spec section 1.7 / 6.3): 3x3 TDM MIMO, one chirp per Tx per
-/// frame (no Doppler axis), 8 us slot at 32 MHz = 256 fast-time samples.
+/// Seed 004 (docs/algorithms/frontend.md §Departures from the paper): 3x3 TDM MIMO, one
+/// chirp per Tx per frame (no Doppler axis), 8 us slot at 32 MHz = 256 fast-time samples.
 struct Seed004RadarCaps {
   static constexpr std::size_t kNumTx = 3;           ///< transmitters (TDM slots per chirp)
   static constexpr std::size_t kNumRx = 3;           ///< receivers

@@ -5,7 +5,8 @@
 //   c: chirp 0..kNumChirps-1 (slowest: hardware produces chirp by chirp)
 //   m: Tx slot 0..kNumTx-1, j: Rx 0..kNumRx-1, s: fast-time sample (contiguous)
 // The virtual channel is v = m * kNumRx + j, i.e. Tx spacing kNumRx * d and
-// Rx spacing d for a filled virtual ULA of spacing d (spec 1.2, "v = 3m + j").
+// Rx spacing d for a filled virtual ULA of spacing d ("v = 3m + j";
+// docs/algorithms/frontend.md §Frame input and checks).
 // Each complex sample is interleaved (re, im); the array is 16-byte aligned.
 //
 // Int16 variant: raw ADC codes; sample value = code / 32768, so full scale

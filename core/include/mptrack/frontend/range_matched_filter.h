@@ -4,13 +4,14 @@
 // correlation of the received samples with the (windowed) transmitted chirp
 //   r_{c,v}[g] = sum_i y_{c,v}[i + g] * w[i] * conj(u[i]),  g = 0..kNumRangeBins-1
 // computed as IFFT( FFT(y) * conj(FFT(w u)) / M ) with M = kRangeFftSize
-// (spec 2.1 step 2-3: frequency-domain matched filter). M is a power of two,
-// so the 1/M folded into the reference is exact. The correlation is
+// (frequency-domain matched filter: docs/algorithms/frontend.md §Range matched filter).
+// M is a power of two, so the 1/M folded into the reference is exact. The correlation is
 // circular over M; it equals the linear one for g <= M - L (L = chirp
 // samples), which holds for every kept bin when kNumRangeBins <= M - L + 1
 // (checked in init()). Bin g is the two-way delay g / f_s, range g c / (2 f_s).
 //
-// Reference chirp (spec 1.3 [R], centred so it sweeps -BW/2..+BW/2):
+// Reference chirp (docs/algorithms/frontend.md §Range matched filter, centred so it
+// sweeps -BW/2..+BW/2):
 //   u[i] = exp(j pi kappa t_i^2),  t_i = (i - (L-1)/2) / f_s,  kappa = BW / T_Tx,
 // i = 0..L-1, L = round(T_Tx f_s). An echo delayed by d samples,
 // y[i] = a u[i - d], peaks at g = d with value a * sum_i w[i] (processing gain
@@ -125,9 +126,9 @@ class RangeMatchedFilter {
     return Status::kOk;
   }
 
-  /// Per-virtual-channel complex calibration c_v (spec 2.1 step 1), applied
-  /// to every range profile of channel v: r_v <- c_v r_v. init() resets it
-  /// to 1. kInvalidArgument (calibration unchanged) if any value is NaN/Inf.
+  /// Per-virtual-channel complex calibration c_v (docs/algorithms/frontend.md §Range
+  /// matched filter), applied to every range profile of channel v: r_v <- c_v r_v.
+  /// init() resets it to 1. kInvalidArgument (calibration unchanged) if any value is NaN/Inf.
   Status set_channel_calibration(const std::array<float, kNumVirtual>& re,
                                  const std::array<float, kNumVirtual>& im) {
     for (std::size_t v = 0; v < kNumVirtual; ++v) {

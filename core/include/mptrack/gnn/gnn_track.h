@@ -1,12 +1,12 @@
 // One track of the GNN baseline and its M-of-N / consecutive-miss logic
-// (seed 004 spec 2.5: confirmed after 3 detections within 5 consecutive
+// (seed 004 Sec. V-A: confirmed after 3 detections within 5 consecutive
 // scans, deleted after 5 consecutive scans without a detection).
 //
 // hit_history holds one bit per scan since birth, bit 0 = the latest scan.
-// Tentative tracks that can no longer reach M hits within their first N
-// scans are deleted at once [impl]: without this rule a clutter-born track
-// would live max_misses scans, and the M-of-N test would then run over a
-// sliding window that no longer starts at the track's birth (MATLAB's
+// Tentative tracks that can no longer reach M hits within their first N scans are deleted
+// at once (our choice: docs/algorithms/gnn.md §Departures from the paper): without this
+// rule a clutter-born track would live max_misses scans, and the M-of-N test would then run
+// over a sliding window that no longer starts at the track's birth (MATLAB's
 // trackHistoryLogic likewise drops tentative tracks failing confirmation).
 #pragma once
 

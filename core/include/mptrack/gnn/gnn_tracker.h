@@ -1,5 +1,5 @@
-// GNN + constant-velocity EKF detect-then-track baseline (seed 004 spec
-// 2.5, the "DTT" the VMP tracker is compared against; MATLAB trackerGNN
+// GNN + constant-velocity EKF detect-then-track baseline (seed 004 Sec. V-A,
+// the "DTT" the VMP tracker is compared against; MATLAB trackerGNN
 // with ConfirmationThreshold [3 5], DeletionThreshold [5 5]).
 //
 // Follows the tracker contract of track_report.h. Per step():
@@ -14,7 +14,8 @@
 //   6. a tentative track from every unassigned valid measurement;
 //   7. report (confirmed tracks only, unless report_tentative).
 //
-// Association cost [impl]. The spec's cost is d2 + ln|S_i| for track i.
+// Association cost (docs/algorithms/gnn.md §Association). The cost we want is
+// d2 + ln|S_i| for track i.
 // Each track row also gets "not assigned" dummy columns at cost
 // gate_chi2 + ln|S_i| (a measurement exactly on the gate). Every row is
 // then assigned exactly once, so the row constant ln|S_i| adds the same
@@ -299,7 +300,8 @@ class GnnTracker {
   StaticVector<GnnTrack<T>, kMaxTracks> tracks_;
   OutputQueue outputs_;
   TrackerCounters counters_{};
-  // Per-step scratch (members, not stack: rule 1).
+  // Per-step scratch (members, not stack: README.md §Conventions a firmware engineer
+  // can rely on).
   StaticVector<std::uint16_t, kMaxMeasurements> valid_;           ///< scan indices of valid measurements
   std::array<bool, kMaxMeasurements> kept_{};                     ///< per scan index: in valid_
   std::array<bool, kMaxMeasurements> measurement_used_{};         ///< per valid measurement

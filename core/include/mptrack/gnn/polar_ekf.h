@@ -1,6 +1,6 @@
 // Polar (range, azimuth) measurements of a Cartesian CV state: EKF pieces.
 //
-// Choice (seed 004 spec 2.5 leaves it open): an EKF update rather than a
+// Choice (seed 004 Sec. V-A leaves it open): an EKF update rather than a
 // converted-measurement KF. Range and azimuth noises are independent in
 // the sensor's own coordinates, so R = diag(sigma_r^2, sigma_az^2) is exact;
 // a converted measurement would need a range-dependent, correlated
@@ -13,7 +13,7 @@
 //     (Bar-Shalom, Li, Kirubarajan 2001, eq. 5.2.3-18; stays PSD under
 //      rounding, unlike P - K S K^T).
 // Azimuth innovations are wrapped to [-pi, pi]. Only dmath is used for the
-// transcendental functions (rule 2).
+// transcendental functions (README.md §Conventions a firmware engineer can rely on).
 #pragma once
 
 #include <cmath>
@@ -111,7 +111,7 @@ void polar_update(model::CvState<T>& x, model::CvCovariance<T>& P, const Eigen::
   P = AP * A.transpose() + KR * K.transpose();
 }
 
-/// Single-point initiation (spec 2.5): position from the measurement,
+/// Single-point initiation (docs/algorithms/gnn.md §Update): position from the measurement,
 /// velocity 0. Position covariance J R J^T with J = d(x, y)/d(r, az) at
 /// the measurement; velocity covariance init_velocity_std^2 I.
 template <class T>

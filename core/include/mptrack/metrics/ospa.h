@@ -1,6 +1,6 @@
 // OSPA metric on 2-D positions (Schuhmacher, Vo, Vo, "A consistent metric
 // for performance evaluation of multi-object filters", IEEE TSP 2008).
-// Seed 000 spec 5.1 (p = 2, c = 631 m), seed 004 spec 5.3 (p = 2, c = 10 m):
+// Seed 000 Sec. IV-A (p = 2, c = 631 m), seed 004 Sec. V-A (p = 2, c = 10 m):
 //
 //   d_c^(p)(X, Y) = ( (1/n) [ min_pi sum_{i=1}^m min(c, ||x_i - y_pi(i)||)^p
 //                             + c^p (n - m) ] )^(1/p),   m <= n,

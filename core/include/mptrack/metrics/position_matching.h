@@ -1,5 +1,5 @@
 // The OSPA assignment between truth and estimated 2-D positions, exposed
-// as a matching for the harness metrics that need it (seed 000 spec 5.1:
+// as a matching for the harness metrics that need it (docs/algorithms/metrics.md §CAR:
 // CAR, NFT and RSE all match tracks to truths "by the OSPA assignment").
 //
 // The assignment minimises sum_i min(c, ||x_i - y_pi(i)||)^p over all

@@ -1,6 +1,7 @@
 // Amplitude model of seed 000: detection probability from the threshold
-// (spec 2.4) and the truncated generalised-Rayleigh amplitude likelihood in
-// the conjugate parameterisation varsigma = 1 + SNR (spec 2.5).
+// (docs/algorithms/models.md §Detection probability) and the truncated
+// generalised-Rayleigh amplitude likelihood in the conjugate parameterisation
+// varsigma = 1 + SNR (docs/algorithms/models.md §Amplitude likelihoods).
 //
 // Terms common to every source of one measurement (ln 2 + (2n-1) ln m and
 // the Nakagami constant) are dropped: they cancel in the BP messages.
@@ -16,7 +17,8 @@ inline int swerling_order(int swerling) { return swerling == 3 ? 2 : 1; }
 
 /// P_D for total mean power varsigma = 1 + snr (linear), threshold d.
 /// kExact: P(u > d^2) for u ~ Gamma(n, varsigma/n) = e^-x sum_{l<n} x^l/l!,
-/// x = n d^2 / varsigma (spec 2.4 [fix]). kPaper: (P9) e^-x.
+/// x = n d^2 / varsigma (docs/algorithms/models.md §Detection probability).
+/// kPaper: (seed 000 eq. (9)) e^-x.
 template <class T>
 T detection_probability(T varsigma, T d, int n, PdModel model) {
   const T x = T(n) * d * d / varsigma;
@@ -26,8 +28,9 @@ T detection_probability(T varsigma, T d, int n, PdModel model) {
 }
 
 /// E_IG(a,b)[ln R^d(m; varsigma, n)] up to the per-measurement constant.
-/// kExact (spec 2.5 [fix]): -n (ln b - psi(a)) - n (m^2 - d^2) a / b.
-/// kPaper (P80/86/109): (2n-1) ln m - n m^2 a/b + n / (2 (a-2)), a > 2.
+/// kExact (docs/algorithms/models.md §Amplitude likelihoods):
+/// -n (ln b - psi(a)) - n (m^2 - d^2) a / b.
+/// kPaper (seed 000 eqs. (80), (86), (109)): (2n-1) ln m - n m^2 a/b + n / (2 (a-2)), a > 2.
 template <class T>
 T expected_amplitude_loglik(T m, T d, T a, T b, int n, AmpLoglik model) {
   const T tn = T(n);

@@ -1,5 +1,6 @@
-// Loopy belief propagation for the data association of one scan (spec 3.5,
-// (P99)-(P102), Appendix B of the paper).
+// Loopy belief propagation for the data association of one scan
+// (docs/algorithms/mfbp.md §Evidence and association, seed 000 eqs. (99)-(102),
+// Appendix B of the paper).
 //
 // Sources: targets i (one-to-one, constraint E^t_i), clutter components
 // tau (one-to-many, E^c_tau; tau = 0 is the uniform component, always
@@ -7,10 +8,10 @@
 // Target-measurement edges are sparse (only gated pairs are stored), the
 // clutter side is dense (few components). Local evidence is given in the
 // log domain and rescaled per measurement by its maximum before
-// exponentiation (spec 3.3, "Scaling"). Leave-one-out sums use prefix and
-// suffix sums, not S - rho, which loses precision when one source
-// dominates (spec 3.13). Products prod(1 + phi) are sums of log1p.
-// The damped messages are eta (spec A25).
+// exponentiation (docs/algorithms/mfbp.md §Evidence and association). Leave-one-out
+// sums use prefix and suffix sums, not S - rho, which loses precision when one source
+// dominates (same section). Products prod(1 + phi) are sums of log1p.
+// The damped messages are eta (docs/algorithms/mfbp.md §Departures from the paper).
 #pragma once
 
 #include <array>
@@ -55,7 +56,8 @@ class AssociationBp {
     return Status::kOk;
   }
 
-  /// Adds a target with missed-detection ratio theta0 (spec 3.3, absolute).
+  /// Adds a target with missed-detection ratio theta0 (absolute; docs/algorithms/mfbp.md
+  /// §Evidence and association).
   /// Its edges follow with add_edge(). Returns kCapacityExceeded when full.
   Status add_target(T theta0) {
     if (nt_ == MaxTargets) return Status::kCapacityExceeded;
@@ -80,7 +82,8 @@ class AssociationBp {
   void set_clutter_log(std::size_t tau, std::size_t j, T log_theta) { theta_c_[tau][j] = log_theta; }
   void set_clutter_absent(std::size_t tau, T theta0) { theta_c0_[tau] = theta0; }
 
-  /// Runs damped loopy BP (spec 3.5) and computes the beliefs.
+  /// Runs damped loopy BP (docs/algorithms/mfbp.md §Evidence and association) and
+  /// computes the beliefs.
   Result run(T damping, T tolerance, std::size_t max_iterations) {
     exponentiate_evidence();
     build_measurement_index();
@@ -185,7 +188,7 @@ class AssociationBp {
     act_start_[nm_] = static_cast<std::uint16_t>(n);
   }
 
-  // I_j side: phi = theta / (sum of the other sources' rho), (P99)-(P100).
+  // I_j side: phi = theta / (sum of the other sources' rho), seed 000 eqs. (99)-(100).
   // all = false: coupled measurements only (inside the loop); true: every one.
   void measurement_side(bool all) {
     const std::size_t count = all ? nm_ : n_coupled_;
@@ -226,7 +229,8 @@ class AssociationBp {
     }
   }
 
-  // E^t_i side (P101) and E^c_tau side (P102), damped; returns max |d eta|.
+  // E^t_i side (seed 000 eq. (101)) and E^c_tau side (seed 000 eq. (102)), damped;
+  // returns max |d eta|.
   T target_and_clutter_side(T damping) {
     T delta = T(0);
     for (std::size_t i = 0; i < nt_; ++i) {
@@ -244,13 +248,14 @@ class AssociationBp {
       }
     }
     for (std::size_t t = 1; t < nc_; ++t) {
-      // (P102): eta_tau,j = 1 / (1 + theta0 / prod_{j' != j} (1 + phi_j')).
+      // (seed 000 eq. (102)): eta_tau,j = 1 / (1 + theta0 / prod_{j' != j} (1 + phi_j')).
       // The leave-one-out products come from prefix and suffix products
       // saturated at kBig (factors are >= 1, so saturation is monotone and
-      // theta0 / kBig is negligible); this replaces the spec's sum of logs
+      // theta0 / kBig is negligible); this replaces a sum of logs
       // (same purpose: no overflow) without a transcendental per pair.
       // Gated-out pairs (theta = 0, phi = 0) contribute a factor 1 and their
-      // eta is never used, so they are skipped (sparsity, spec A29).
+      // eta is never used, so they are skipped (sparsity, docs/algorithms/mfbp.md
+      // §Departures from the paper).
       if (!(theta_c0_[t] > T(0))) continue;  // E^c off: eta stays 1
       std::size_t n = 0;
       cprefix_[0] = T(1);

@@ -1,14 +1,16 @@
 // Cavity (extrinsic) measurement-space moments of a target at one scan:
 // the smoothed belief with that scan's own pseudo-measurement removed
-// (MfbpParams::association_cavity, [impl], not in the paper).
+// (MfbpParams::association_cavity; our choice, not in the paper:
+// docs/algorithms/mfbp.md §Departures from the paper).
 //
 // Gaussian division in information form, measurement space (2x2):
 //   S_cav^-1 = Sz^-1 - w R^-1
 //   z_cav    = S_cav (Sz^-1 z_hat - w R^-1 y_bar)
 //            = z_hat - S_cav w R^-1 (y_bar - z_hat)
 // where (y_bar, R / w) is the pseudo-measurement of the previous iteration
-// (spec 3.9, P40) and R is diagonal. The second form needs only the
-// innovation e_bar = y_bar - z_hat (azimuth already wrapped by the caller).
+// (seed 000 eq. (40); docs/algorithms/mfbp.md §Target chain) and R is diagonal. The
+// second form needs only the innovation e_bar = y_bar - z_hat (azimuth already wrapped
+// by the caller).
 // No libm, no heap; closed-form 2x2 inverses.
 #pragma once
 

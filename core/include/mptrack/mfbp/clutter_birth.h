@@ -1,5 +1,5 @@
-// Grid seeding of clutter components (spec 3.10 [impl]): measurements that
-// uniform clutter explains are histogrammed on a polar grid; dense cells
+// Grid seeding of clutter components (docs/algorithms/mfbp.md §Birth): measurements
+// that uniform clutter explains are histogrammed on a polar grid; dense cells
 // (count >= max(2 n_scans, factor mu_cell)) are merged with their
 // 4-neighbours into seeds, and each seed becomes a Normal-Wishart component.
 #pragma once

@@ -1,10 +1,11 @@
 // Cubature transform of a Cartesian CV state through the polar measurement
-// function h(x) of model/polar_measurement.h (spec 2.6, 3.2).
+// function h(x) of model/polar_measurement.h (docs/algorithms/models.md
+// §Polar measurement model).
 //
 // Third-degree spherical-radial cubature: 2 n = 8 points x +- sqrt(n) L e_i
-// with equal weights 1/8 (spec 3.2 [impl]: no negative weights). Azimuth
-// deviations are wrapped to (-pi, pi] around h(x_hat) before averaging, so
-// a track near the +-pi cut keeps a consistent mean.
+// with equal weights 1/8 (docs/algorithms/models.md §Polar measurement model: no
+// negative weights). Azimuth deviations are wrapped to (-pi, pi] around h(x_hat)
+// before averaging, so a track near the +-pi cut keeps a consistent mean.
 #pragma once
 
 #include <Eigen/Core>

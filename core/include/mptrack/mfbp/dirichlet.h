@@ -1,4 +1,5 @@
-// Dirichlet belief on the clutter mixing weights (spec 2.8, 3.2, 3.6).
+// Dirichlet belief on the clutter mixing weights (docs/algorithms/mfbp.md
+// §Clutter chain).
 #pragma once
 
 #include <cstddef>
@@ -7,7 +8,7 @@
 
 namespace mptrack::mfbp {
 
-/// Prediction (P70): alpha_k|k-1 = kappa M_k-1 alpha / sum(alpha): keeps
+/// Prediction (seed 000 eq. (70)): alpha_k|k-1 = kappa M_k-1 alpha / sum(alpha): keeps
 /// the mean weights, total pseudo-count kappa times the last clutter count.
 /// M_prev is floored at 1 so an empty scan does not collapse the belief.
 template <class T>
@@ -22,7 +23,8 @@ void dirichlet_predict(const T* alpha_in, T* alpha_out, std::size_t n, T kappa, 
   }
 }
 
-/// E[ln pi_t] = psi(alpha_t) - psi(sum alpha) (spec 3.2, (P91) fixed: A11).
+/// E[ln pi_t] = psi(alpha_t) - psi(sum alpha) (seed 000 eq. (91), corrected:
+/// docs/algorithms/mfbp.md §Departures from the paper).
 template <class T>
 void dirichlet_expected_log(const T* alpha, T* e_log, std::size_t n) {
   T total = T(0);

@@ -8,7 +8,8 @@ namespace mptrack::mfbp {
 
 using model::InverseGamma;
 
-/// Weighted amplitude statistics of one scan for one source (spec 3.8.1):
+/// Weighted amplitude statistics of one scan for one source (docs/algorithms/mfbp.md
+/// §Clutter chain, §Target chain):
 /// w = sum a_j, s = sum a_j (m_j^2 - d^2). The IG update uses n w and n s.
 template <class T>
 struct AmplitudeStats {

@@ -1,5 +1,6 @@
 // Normal-Wishart belief of one Gaussian clutter component in measurement
-// (polar) space: N(x^c; mu, (c D)^-1) W(D; W, nu), q = 2 (spec 1.2, 2.8, 3.8).
+// (polar) space: N(x^c; mu, (c D)^-1) W(D; W, nu), q = 2 (docs/algorithms/mfbp.md
+// §Clutter chain).
 //
 // We store W^-1 (covariance-like, "w_inv") rather than W: the conjugate
 // update adds scatter matrices to W^-1 (Bishop 10.62) and the reported
@@ -14,9 +15,10 @@
 
 namespace mptrack::mfbp {
 
-/// Weighted measurement statistics of one component at one scan (spec 3.8,
-/// (P58)), kept relative to a reference point `ref` (azimuth offsets
-/// wrapped) so float sums of squares do not cancel catastrophically.
+/// Weighted measurement statistics of one component at one scan
+/// (docs/algorithms/mfbp.md §Clutter chain, seed 000 eq. (58)), kept relative to a
+/// reference point `ref` (azimuth offsets wrapped) so float sums of squares do not
+/// cancel catastrophically.
 template <class T>
 struct NwStats {
   T n = T(0);                              ///< sum a_j [-]
@@ -56,8 +58,9 @@ struct NormalWishart {
   Mat2<T> w_inv = Mat2<T>::Identity();     ///< W^-1 [m^2, m rad; ., rad^2]
   T nu = T(4);                             ///< degrees of freedom (> q + 1 = 3) [-]
 
-  /// Forgetting transition (spec 2.8): mu, c kept; nu <- xi (nu - 3) + 3;
-  /// kMeanPreserving: W^-1 <- xi W^-1 (A9 fix); kPaper: W^-1 <- W^-1 / xi.
+  /// Forgetting transition (docs/algorithms/mfbp.md §Clutter chain): mu, c kept;
+  /// nu <- xi (nu - 3) + 3; kMeanPreserving: W^-1 <- xi W^-1 (docs/algorithms/mfbp.md
+  /// §Departures from the paper); kPaper: W^-1 <- W^-1 / xi.
   NormalWishart predicted(T xi, NwForgetting mode) const {
     NormalWishart out = *this;
     out.nu = xi * (nu - T(3)) + T(3);
@@ -69,7 +72,7 @@ struct NormalWishart {
     return out;
   }
 
-  /// Conjugate update (P57) [Bishop 10.60-10.63]; skipped for N < 1e-6.
+  /// Conjugate update (seed 000 eq. (57)) [Bishop 10.60-10.63]; skipped for N < 1e-6.
   void update(const NwStats<T>& s) {
     if (!(s.n > T(1e-6))) return;
     const T N = s.n;
@@ -93,8 +96,8 @@ struct NormalWishart {
     return w_inv / dof;
   }
 
-  /// Terms of E ln c(y) (spec 3.2, Bishop 10.64-10.65) that do not depend
-  /// on y: -ln(2 pi) + E ln|D| / 2. W = (W^-1)^-1, so ln|W| = -ln|W^-1|.
+  /// Terms of E ln c(y) (docs/algorithms/mfbp.md §Clutter chain, Bishop 10.64-10.65)
+  /// that do not depend on y: -ln(2 pi) + E ln|D| / 2. W = (W^-1)^-1, so ln|W| = -ln|W^-1|.
   T expected_log_norm() const {
     const T det = w_inv(0, 0) * w_inv(1, 1) - w_inv(0, 1) * w_inv(1, 0);
     const T e_log_det = dmath::ddigamma(T(0.5) * nu) + dmath::ddigamma(T(0.5) * (nu - T(1))) +

@@ -1,5 +1,6 @@
 // Target kinematics: CV prediction, cubature update on the association-
-// weighted pseudo-measurement and the linear RTS smoother (spec 2.1, 3.9).
+// weighted pseudo-measurement and the linear RTS smoother (docs/algorithms/mfbp.md
+// §Target chain).
 //
 // Covariances stay symmetric positive definite in float through the SPD
 // guard of model/spd_guard.h (symmetrise, Cholesky test with the F14 pivot
@@ -70,9 +71,9 @@ bool cv_predict(Vec4<T>& x, Mat4<T>& P, T dt_s, T q) {
 }
 
 /// Cubature update with pseudo-measurement y_bar and noise R_bar = R / w
-/// (spec 3.9, (P40)); M = 2 (range, azimuth) or 3 (+ Doppler). x, P are
-/// the prediction on input, the posterior on output. Returns true if a
-/// numerical repair was needed.
+/// (seed 000 eq. (40); docs/algorithms/mfbp.md §Target chain); M = 2 (range, azimuth)
+/// or 3 (+ Doppler). x, P are the prediction on input, the posterior on output.
+/// Returns true if a numerical repair was needed.
 /// If white is given it receives the whitened innovation L^-1 e, S = L L^T
 /// (its first two rows, range and azimuth, do not depend on a Doppler row;
 /// untouched when the update fails).
@@ -109,8 +110,9 @@ bool cubature_update(Vec4<T>& x, Mat4<T>& P, const Vec2<T>& y_bar, const Mat2<T>
   return cubature_update_m<T, 2>(x, P, y_bar, R_bar, white);
 }
 
-/// One RTS step (spec 3.9): from the filtered (xf, Pf) at k and the smoothed
-/// (xs_next, Ps_next) at k+1 (dt apart) to the smoothed (xs, Ps) at k.
+/// One RTS step (docs/algorithms/mfbp.md §Target chain): from the filtered (xf, Pf)
+/// at k and the smoothed (xs_next, Ps_next) at k+1 (dt apart) to the smoothed
+/// (xs, Ps) at k.
 /// Returns true if a repair was needed.
 template <class T>
 bool rts_step(const Vec4<T>& xf, const Mat4<T>& Pf, const Vec4<T>& xs_next,

@@ -1,4 +1,4 @@
-// Two-point track initiation (spec 2.9, 3.10; [paper], details [impl]).
+// Two-point track initiation (seed 000 Sec. III-G; docs/algorithms/mfbp.md §Birth).
 #pragma once
 
 #include "mptrack/mfbp/cubature.h"
@@ -36,7 +36,8 @@ bool birth_range_gate(T r1_m, T r2_m, T dt_s, T v_max_x, T v_max_y) {
   return !(dr > reach + T(1e-3) * r + T(1));
 }
 
-/// True if a measurement pair passes the v_max box gate (spec 2.9):
+/// True if a measurement pair passes the v_max box gate (docs/algorithms/mfbp.md
+/// §Birth):
 /// |dx| <= dt v_max_x and |dy| <= dt v_max_y.
 template <class T>
 bool birth_gate(const Vec2<T>& p1, const Vec2<T>& p2, T dt_s, T v_max_x, T v_max_y) {
@@ -47,7 +48,8 @@ bool birth_gate(const Vec2<T>& p1, const Vec2<T>& p2, T dt_s, T v_max_x, T v_max
   return adx <= dt_s * v_max_x && ady <= dt_s * v_max_y;
 }
 
-/// Initial state at the second point (spec 3.10): position p2, velocity
+/// Initial state at the second point (docs/algorithms/mfbp.md §Birth): position p2,
+/// velocity
 /// (p2 - p1)/dt; P_pos = J R J^T at y2; velocity covariance
 /// (P_pos1 + P_pos2)/dt^2; position-velocity cross term P_pos2/dt.
 template <class T>
@@ -61,8 +63,9 @@ void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, T 
   x << p2(0), v(0), p2(1), v(1);
   Mat2<T> Pv = (P1 + P2) / (dt_s * dt_s);
   Mat2<T> Pc = P2 / dt_s;
-  // [impl] Two points a few ms apart say nothing about the velocity: the
-  // difference formula gives a velocity std of ~1e5 m/s, and after a few
+  // Our choice (docs/algorithms/mfbp.md §Departures from the paper): two points a few
+  // ms apart say nothing about the velocity: the difference formula gives a velocity
+  // std of ~1e5 m/s, and after a few
   // updates the float covariance, with position-velocity correlation ~1,
   // is no longer positive definite (fuzz finding F13, docs/reliability.md).
   // Beyond 100 x v_max in std the v_max box prior (uniform: v_max^2 / 3)
@@ -87,7 +90,8 @@ void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, T 
   }
 }
 
-/// IG at birth (spec 2.9 [fix], A16): a = shape, b = factor mean(m^2 - d^2).
+/// IG at birth (docs/algorithms/mfbp.md §Departures from the paper): a = shape,
+/// b = factor mean(m^2 - d^2).
 template <class T>
 InverseGamma<T> birth_snr_belief(T m1, T m2, T d, T shape, T factor) {
   InverseGamma<T> ig;

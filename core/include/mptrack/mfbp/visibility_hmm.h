@@ -1,9 +1,10 @@
-// Two-state visibility HMM per track (spec 2.3, 3.7; (P64)-(P68)).
+// Two-state visibility HMM per track (seed 000 eqs. (3), (64)-(68);
+// docs/algorithms/mfbp.md §Target chain).
 //
 // Transition T_vis: P(1|1) = p_s, P(1|0) = p_b. Evidence per scan is the
-// association message Xi_k(s) (spec 3.5): Xi(1) = 1 - Pd + Pd Lambda,
-// Xi(0) = 1 - eps + eps Lambda, Lambda = sum_j>=1 phi_ij (1 where the track
-// did not take part in the association).
+// association message Xi_k(s) (docs/algorithms/mfbp.md §Target chain):
+// Xi(1) = 1 - Pd + Pd Lambda, Xi(0) = 1 - eps + eps Lambda, Lambda = sum_j>=1 phi_ij
+// (1 where the track did not take part in the association).
 #pragma once
 
 #include <cstddef>

@@ -11,7 +11,7 @@
 //   missed weight    w (1 - P_D) <A^1(Z), p> / (W <A^0(Z), p>)
 //   detected weight  w P_D g(z) / kappa(z) <A^1(Z \ z), p> / (W <A^0(Z), p>)
 // Everything is in the log domain: R' spans e^-100 .. e^+100 with
-// amplitude, and n! overflows float past n = 34 (seed 001 spec 5.3 [impl]).
+// amplitude, and n! overflows float past n = 34 (docs/algorithms/gm-phd.md §Update).
 // Only orders j <= N (the support) are ever needed, so an ESF costs O(|Z| N).
 #pragma once
 

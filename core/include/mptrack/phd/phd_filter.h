@@ -1,11 +1,12 @@
-// GM-PHD and GM-CPHD filters with amplitude information (IGGM, seed 001
-// spec 5.1-5.3), in fixed memory. The two share everything except the
+// GM-PHD and GM-CPHD filters with amplitude information (IGGM, seed 001;
+// docs/algorithms/gm-phd.md), in fixed memory. The two share everything except the
 // weight factors of the update, selected by the Cardinalized parameter:
-//   GmPhdFilter<T, Caps>  = PhdFilter<T, Caps, false>   (spec 5.2, P66-P72)
+//   GmPhdFilter<T, Caps>  = PhdFilter<T, Caps, false>   (seed 001 eqs. (66)-(72);
+//                                                        docs/algorithms/gm-phd.md §Update)
 //   GmCphdFilter<T, Caps> = PhdFilter<T, Caps, true>    (Vo, Vo, Cantoni 2007)
 //
 // Per scan (step):
-//   predict   w *= p_S, CV kinematics, power forgetting (spec 1.3); births
+//   predict   w *= p_S, CV kinematics, power forgetting (seed 001 eq. (50)); births
 //             seeded by the previous scan's measurements (filter_common.h);
 //             clutter statistics forgotten (clutter_estimator.h)
 //   update    PHD:  missed w (1 - P_D); detected w q(z) / (kappa(z) + sum w q(z))

@@ -1,23 +1,24 @@
 // Clutter model shared by the IGGM baselines: Poisson clutter as a union of
 // sources, each with a rate (detections per scan), a spatial density and an
-// IG-distributed Weibull amplitude scale (seed 001 spec 3.4, 4, 5.1):
+// IG-distributed Weibull amplitude scale (docs/algorithms/gm-phd.md §Clutter estimation):
 //   kappa(z, a) = lambda_0 / V g_0(a) + sum_c lambda_c N(z; mu_c, C_c) g_c(a)
-// with g the IG-marginal truncated Weibull (K_WB, P62-P63).
+// with g the IG-marginal truncated Weibull (K_WB, seed 001 eqs. (62)-(63)).
 //
-// Estimation [impl]: seed 001 carries clutter generators inside the PHD
-// (kappa-PHD); here each source keeps conjugate statistics instead, updated
-// with the clutter responsibility of every measurement (what the filter's
-// update says is clutter, split over the sources by their share of kappa):
+// Estimation (our choice: docs/algorithms/gm-phd.md §Departures from the paper): seed
+// 001 carries clutter generators inside the PHD (kappa-PHD); here each source keeps
+// conjugate statistics instead, updated with the clutter responsibility of every
+// measurement (what the filter's update says is clutter, split over the sources by
+// their share of kappa):
 //   rate   Gamma(s, t):      s += sum resp, t += 1     (forgetting s, t /= v)
 //   power  IG(alpha, beta):  alpha += sum resp, beta += sum resp (a^2b - d^2b)
 //   place  weighted moments of z (forgetting /= v): mu, C (C >= R on the diagonal)
-// With a PHD update this is exactly the kappa-PHD weight update of a source
-// with p_S = 1 (spec 5.1), without its bias from the clutter birth/survival
-// values the paper does not give. Sources (hot spots) are seeded from boxes
-// holding >= hotspot_min_points uniform-clutter measurements of one scan
-// (far above the uniform expectation) and deleted when their rate drops
-// below hotspot_min_rate. Overflow policy: a seed that finds all
-// MaxSources slots taken is dropped and counted (clutter_cap_hits).
+// With a PHD update this is exactly the kappa-PHD weight update of a source with p_S = 1
+// (docs/algorithms/gm-phd.md §Clutter estimation), without its bias from the clutter
+// birth/survival values the paper does not give. Sources (hot spots) are seeded from boxes
+// holding >= hotspot_min_points uniform-clutter measurements of one scan (far above the
+// uniform expectation) and deleted when their rate drops below hotspot_min_rate. Overflow
+// policy: a seed that finds all MaxSources slots taken is dropped and counted
+// (clutter_cap_hits).
 #pragma once
 
 #include <array>
@@ -74,7 +75,7 @@ class ClutterEstimator {
     return Status::kOk;
   }
 
-  /// Forgetting of every statistic (spec 1.3 for the powers).
+  /// Forgetting of every statistic (seed 001 eq. (50) for the powers).
   void predict() {
     if (params_.clutter_mode == ClutterMode::kKnownUniform) return;
     const T v = params_.clutter_forgetting;
@@ -186,7 +187,8 @@ class ClutterEstimator {
   std::uint64_t cap_hits() const { return cap_hits_; }
 
  private:
-  // Mean clutter power E[a^2] = sigma0^(1/b) Gamma(1 + 1/b) (spec 3.4 [supplement]).
+  // Mean clutter power E[a^2] = sigma0^(1/b) Gamma(1 + 1/b) (docs/algorithms/models.md
+  // §Amplitude likelihoods).
   T mean_power(const Source& s) const {
     const T b = params_.weibull_shape;
     const T sigma0 = params_.clutter_mode == ClutterMode::kKnownUniform ? params_.clutter_scale

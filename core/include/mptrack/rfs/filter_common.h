@@ -3,9 +3,10 @@
 // Joseph-form posterior, gated log-likelihoods, the component update and
 // measurement-driven births.
 //
-// Births [impl]: seed 001 uses 6 fixed birth locations, which no other
-// scenario has. Here every valid measurement of scan k-1 seeds a birth
-// component at scan k (zero velocity, std birth_velocity_std_mps), with
+// Births (our choice: docs/algorithms/gm-phd.md §Departures from the paper): seed 001
+// uses 6 fixed birth locations, which no other scenario has. Here every valid
+// measurement of scan k-1 seeds a birth component at scan k (zero velocity, std
+// birth_velocity_std_mps), with
 // weight birth_rate * (1 - P_t(z)) / sum(1 - P_t), P_t(z) being the
 // probability that z came from an existing target (Ristic et al. 2012,
 // adaptive birth). Birth powers use the prior (target_power_prior,

@@ -1,5 +1,5 @@
-// IGG mixture components and fixed-capacity mixture reduction (seed 001
-// spec 5.5): prune, merge, cap.
+// IGG mixture components and fixed-capacity mixture reduction (seed 001 Sec. 4.6;
+// docs/algorithms/gm-phd.md §Mixture reduction): prune, merge, cap.
 //
 // Policy (documented, deterministic):
 //  1. components with weight < prune_threshold are dropped;

@@ -1,9 +1,9 @@
-// AdcScenario: a raw-ADC MIMO radar scenario as data (seed 004 spec 1 and
-// 5). Same spirit as scenario::ScenarioSpec: the JSON files in
-// host-sim/scenarios/ (schema "mptrack-adc-scenario/1") load to exactly these
+// AdcScenario: a raw-ADC MIMO radar scenario as data (seed 004 Secs. II and V;
+// docs/algorithms/scenarios.md §Seed 004). Same spirit as scenario::ScenarioSpec: the JSON
+// files in host-sim/scenarios/ (schema "mptrack-adc-scenario/1") load to exactly these
 // values, angles in degrees, powers in the units named in each field.
 //
-// Geometry (spec 1.1): radar at the origin, array along +x, boresight +y;
+// Geometry (seed 004 eq. (1)): radar at the origin, array along +x, boresight +y;
 // bearing theta = atan2(x, y) measured from +y towards +x. Frame n
 // (1-based) is at time (n - 1) * frame_period_s.
 #pragma once
@@ -17,16 +17,18 @@
 namespace mptrack::adc {
 
 inline constexpr double kBoltzmann_J_per_K = 1.380649e-23;  ///< k_b (SI 2019, exact)
-inline constexpr std::size_t kNumVirtual = 9;                ///< N_T N_R = 3 x 3 (spec 1.2)
+/// N_T N_R = 3 x 3 virtual channels (docs/algorithms/frontend.md §Frame input and checks).
+inline constexpr std::size_t kNumVirtual = 9;
 
-/// Noise variance convention (spec 1.6).
+/// Noise variance convention (docs/algorithms/scenarios.md §Seed 004).
 enum class NoiseModel : std::uint8_t {
   kModelA,   ///< "model_a": N0 = k_b T0, per-sample variance k_b T0 f_s (recommended)
   kLiteral,  ///< "literal": per-sample variance k_b T0 BW, whatever f_s is (paper text)
 };
 
-/// Waveform, array and receiver (spec 1.2, 1.3, 1.7). The ADC samples at
-/// sample_rate_hz directly (the 32 MHz decimated path of spec 6.2).
+/// Waveform, array and receiver (seed 004 Sec. V-A). The ADC samples at
+/// sample_rate_hz directly (the 32 MHz decimated path of docs/algorithms/frontend.md
+/// §Departures from the paper).
 struct RadarSpec {
   double carrier_hz = 10e9;                ///< f_c [Hz]
   double bandwidth_hz = 20e6;              ///< chirp sweep [Hz]
@@ -39,7 +41,7 @@ struct RadarSpec {
   NoiseModel noise_model = NoiseModel::kModelA;
 };
 
-/// One leg of a drone's velocity schedule (spec 5.2 [R]): over `steps`
+/// One leg of a drone's velocity schedule (docs/algorithms/scenarios.md §Seed 004): over `steps`
 /// frame steps the velocity moves linearly from its current value to
 /// velocity_mps (equal values = constant velocity).
 struct MotionLeg {
@@ -47,7 +49,7 @@ struct MotionLeg {
   std::array<double, 2> velocity_mps{};    ///< velocity at the end of the leg (vx, vy) [m/s]
 };
 
-/// A point target (spec 5.2 Table): Swerling RCS drawn per frame (spec 1.4).
+/// A point target (seed 004 Sec. V-A): Swerling RCS drawn per frame.
 struct DroneSpec {
   std::uint32_t id = 1;                    ///< >= 1, unique
   std::array<double, 2> start_m{};         ///< position at birth_frame (x, y) [m]
@@ -99,8 +101,9 @@ struct JammerSpec {
 /// Front-end configuration the scenario is meant to be processed with.
 struct FrontEndSpec {
   double min_range_m = 3.0;                ///< range gate [m]
-  double max_range_m = 100.0;              ///< R_max [m] (spec 1.1)
-  double max_abs_bearing_deg = 75.0;       ///< angle span; track 2 reaches 68.6 deg (spec 5.2)
+  double max_range_m = 100.0;              ///< R_max [m] (seed 004 Sec. V-A)
+  double max_abs_bearing_deg = 75.0;       ///< angle span; track 2 reaches 68.6 deg
+                                           ///< (docs/algorithms/scenarios.md §Seed 004)
   std::string cfar_type = "os";            ///< "ca" | "go" | "so" | "os": OS by default, because a
                                            ///< strong drone in the range training window masks a
                                            ///< weaker one under CA (seen at n = 1..5: drone 1 at
@@ -132,9 +135,9 @@ struct AdcScenario {
   std::string name;
   std::string description;
   std::uint32_t num_frames = 100;          ///< frames 1..num_frames
-  double frame_period_s = 0.1;             ///< Delta t [s] (spec 1.3: 10 Hz)
-  double ospa_cutoff_m = 10.0;             ///< OSPA c [m] (spec 5.3)
-  double ospa_order = 2.0;                 ///< OSPA p (spec 5.3)
+  double frame_period_s = 0.1;             ///< Delta t [s] (seed 004 Sec. V-A: 10 Hz)
+  double ospa_cutoff_m = 10.0;             ///< OSPA c [m] (seed 004 Sec. V-A)
+  double ospa_order = 2.0;                 ///< OSPA p (seed 004 Sec. V-A)
   RadarSpec radar;
   FrontEndSpec frontend;
   TrackerModelSpec tracker_model;
@@ -152,7 +155,7 @@ std::string validate(const AdcScenario& s);
 bool operator==(const AdcScenario& a, const AdcScenario& b);
 inline bool operator!=(const AdcScenario& a, const AdcScenario& b) { return !(a == b); }
 
-/// Built-in scenarios: "seed004-drones" (spec 5.2, clutter-free) and
+/// Built-in scenarios: "seed004-drones" (seed 004 Sec. V-A, clutter-free) and
 /// "mimo-interference" (the same drones plus clutter patches, a chaff cloud
 /// and a jammer sector). False if the name is unknown.
 bool builtin_adc_scenario(const std::string& name, AdcScenario& out);

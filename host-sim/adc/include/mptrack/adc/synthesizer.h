@@ -1,4 +1,4 @@
-// Raw-ADC frame synthesizer for the seed 004 MIMO radar (spec 1.4, eq. 1).
+// Raw-ADC frame synthesizer for the seed 004 MIMO radar (seed 004 eq. (1)).
 //
 // Per frame n, Tx slot m, Rx j (virtual channel v = 3m + j), sample i at
 // t_i = i / f_s within the slot:
@@ -8,7 +8,8 @@
 //   sampled chirp the front end correlates with, so a zero-delay echo is
 //   exactly its reference and range bin g <-> delay g / f_s;
 // - tau = 2r/c; a_v(theta) = exp(j 2 pi d (v - 4) sin theta) (centred
-//   reference, spec 1.2); the carrier phase is absorbed in alpha (spec 1.4);
+//   reference); the carrier phase is absorbed in alpha (both: docs/algorithms/scenarios.md
+//   §Seed 004);
 // - alpha = sqrt(sigma) rho(r) exp(j phi), rho(r) = A G lambda/((4 pi)^1.5 r^2),
 //   sigma ~ Gamma(shape, E[sigma]/shape) per frame (Swerling 1: shape 1,
 //   Swerling 3: shape 2), phi uniform;
@@ -45,7 +46,8 @@ struct DroneTruth {
   double range_m = 0.0;
   double bearing_rad = 0.0;   ///< from +y towards +x
   double rcs_m2 = 0.0;        ///< this frame's Swerling draw
-  double snr_mean = 0.0;      ///< mean component SNR at this range, linear (spec 1.6)
+  double snr_mean = 0.0;      ///< mean component SNR at this range, linear
+                              ///< (docs/algorithms/scenarios.md §Seed 004)
 };
 
 /// Options for tests and studies (defaults = the scenario as written).

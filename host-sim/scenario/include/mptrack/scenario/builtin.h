@@ -1,4 +1,4 @@
-// Built-in scenarios: seed 000 S1, S2, S3 (spec section 4, Tables II-IV).
+// Built-in scenarios: seed 000 S1, S2, S3 (seed 000 Sec. IV-A, Tables II-IV).
 // These constants mirror host-sim/scenarios/seed000-s{1,2,3}.json exactly;
 // the JSON files are what users copy, and scenario_json_test checks that
 // each shipped file loads to exactly the spec returned here.
@@ -12,7 +12,7 @@
 namespace mptrack::scenario {
 
 /// Names accepted by builtin_scenario(): seed000-s1..s3 (polar, seed 000) and
-/// seed001-s1..s5 (Cartesian, seed 001 section 6).
+/// seed001-s1..s5 (Cartesian, seed 001 Sec. 5).
 std::vector<std::string> builtin_scenario_names();
 
 /// The named built-in scenario; false if the name is unknown.

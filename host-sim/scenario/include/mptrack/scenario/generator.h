@@ -1,5 +1,5 @@
-// Scenario generator: truth states and measurements per scan (seed 000 spec
-// section 4.2), reproducible from (seed, run): scan k of run r is drawn from
+// Scenario generator: truth states and measurements per scan (docs/algorithms/scenarios.md
+// §Measurement generation), reproducible from (seed, run): scan k of run r is drawn from
 // its own RNG stream derive_seed(seed, r, k), so scans can be generated in
 // any order, alone, with identical bits on every target.
 //
@@ -14,8 +14,8 @@
 // Cartesian scenarios (seed 001) draw the same way with y = (px, py) +
 // N(0, sigma_xy^2 I), clutter uniform over the x/y box or N(mean, cov) in
 // x/y, and deliver each point as (range, azimuth) = (|y|, atan2). Clutter
-// with a Weibull amplitude (seed 001 spec 3.4) draws a^(2b) = d^(2b) +
-// sigma0 E, E ~ Exp(1): the exact law given a > d (memorylessness).
+// with a Weibull amplitude (docs/algorithms/models.md §Amplitude likelihoods) draws
+// a^(2b) = d^(2b) + sigma0 E, E ~ Exp(1): the exact law given a > d (memorylessness).
 #pragma once
 
 #include <cstddef>
@@ -107,7 +107,8 @@ struct SimScan {
 
 /// Options applied on top of a spec (Table V rows, clutter sweeps).
 struct GeneratorOptions {
-  double clutter_scale = 1.0;        ///< multiplies every mean clutter count (spec 4.4 sweep)
+  double clutter_scale = 1.0;        ///< multiplies every mean clutter count (the sweep of
+                                     ///< docs/algorithms/scenarios.md §Seed 000)
 };
 
 class Generator {

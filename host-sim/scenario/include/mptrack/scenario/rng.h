@@ -58,7 +58,8 @@ class Rng {
   /// i.e. Exp(scale) for n = 1, and for n = 2 the mixture
   /// t/(t+scale) Exp(scale) + scale/(t+scale) Gamma(2, scale).
   double gamma_int_above(int shape, double scale, double t);
-  /// Weibull amplitude of seed 001 spec 3.4, p(a) = (2b/sigma0) a^(2b-1)
+  /// Weibull amplitude (docs/algorithms/models.md §Amplitude likelihoods),
+  /// p(a) = (2b/sigma0) a^(2b-1)
   /// exp(-a^(2b)/sigma0), conditioned on a > t (t > 0), exact:
   /// a^(2b) = t^(2b) + sigma0 E with E ~ Exp(1). b = 1 uses sqrt only.
   double weibull_above(double b, double sigma0, double t);

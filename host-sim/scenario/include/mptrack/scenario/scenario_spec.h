@@ -1,8 +1,8 @@
-// ScenarioSpec: a measurement-level radar scenario as data (seed 000 spec
-// section 4). The same structure is what host-sim/scenarios/*.json hold;
-// fields are in the JSON's units (degrees for angles, linear SNR/CNR) so a
-// JSON file loads to exactly these values and saves back unchanged. The
-// generator converts degrees to radians when it draws measurements.
+// ScenarioSpec: a measurement-level radar scenario as data (seed 000 Sec. IV-A;
+// docs/algorithms/scenarios.md §Seed 000). The same structure is what
+// host-sim/scenarios/*.json hold; fields are in the JSON's units (degrees for angles,
+// linear SNR/CNR) so a JSON file loads to exactly these values and saves back unchanged.
+// The generator converts degrees to radians when it draws measurements.
 //
 // Scan k (1-based) is at time t_k = (k - 1) * scan_period_s.
 #pragma once
@@ -14,21 +14,22 @@
 
 namespace mptrack::scenario {
 
-/// Amplitude fluctuation model (spec 2.4/2.5): the received power
-/// u ~ Gamma(shape n, scale (1 + snr) / n), n = 1 for Swerling I, 2 for III.
+/// Amplitude fluctuation model (docs/algorithms/models.md §Detection probability): the
+/// received power u ~ Gamma(shape n, scale (1 + snr) / n), n = 1 for Swerling I, 2 for III.
 enum class Swerling : std::uint8_t { kOne = 1, kThree = 3 };
 
-/// Gamma shape n of a Swerling case (spec 2.4: n = 1 for I, n = 2 for III).
+/// Gamma shape n of a Swerling case (n = 1 for I, n = 2 for III; docs/algorithms/models.md
+/// §Detection probability).
 constexpr int swerling_shape(Swerling s) { return s == Swerling::kThree ? 2 : 1; }
 
 /// Where measurements live. Seed 000 is polar (range, azimuth); seed 001
-/// (spec section 2) is a Cartesian position sensor: z = (x, y) + N(0, sigma^2 I).
+/// (seed 001 eq. (87)) is a Cartesian position sensor: z = (x, y) + N(0, sigma^2 I).
 /// A Cartesian measurement is still delivered in the polar fields of
 /// mptrack::Measurement (range = |z|, azimuth = atan2(y, x)); the trackers
 /// that model a Cartesian sensor convert it back (phd/measurement_model.h).
 enum class MeasurementSpace : std::uint8_t { kPolar, kCartesian };
 
-/// Surveillance region of a Cartesian scenario [m] (seed 001 section 6:
+/// Surveillance region of a Cartesian scenario [m] (seed 001 Sec. 5:
 /// [-1000, 1000]^2).
 struct CartesianRegion {
   double x_min_m = -1000.0;
@@ -37,13 +38,13 @@ struct CartesianRegion {
   double y_max_m = 1000.0;
 };
 
-/// Clutter amplitude law. kSwerling: power u ~ Gamma(n, (1 + cnr) / n) given
-/// u > d^2 (seed 000 spec 4.2). kWeibull: seed 001 spec 3.4 (P41-P44),
-/// p(a) = (2b / sigma0) a^(2b-1) exp(-a^(2b) / sigma0), given a > d; b = 1,
+/// Clutter amplitude law. kSwerling: power u ~ Gamma(n, (1 + cnr) / n) given u > d^2
+/// (docs/algorithms/scenarios.md §Measurement generation). kWeibull: seed 001 eqs.
+/// (41)-(44), p(a) = (2b / sigma0) a^(2b-1) exp(-a^(2b) / sigma0), given a > d; b = 1,
 /// sigma0 = 1 is Rayleigh noise of unit power (normalised amplitudes).
 enum class ClutterAmplitude : std::uint8_t { kSwerling, kWeibull };
 
-/// Search region in measurement (polar) space, spec 4.1 / A20.
+/// Search region in measurement (polar) space, docs/algorithms/scenarios.md §Seed 000.
 struct Region {
   double range_min_m = 10000.0;
   double range_max_m = 50000.0;
@@ -67,19 +68,21 @@ struct MotionSegment {
   std::array<double, 2> velocity_mps{};      ///< (vx, vy) [m/s], kSetVelocity
 };
 
-/// One target (spec 4.1 Table II). Before its first segment a target moves
+/// One target (seed 000 Table II). Before its first segment a target moves
 /// at constant velocity.
 struct TargetSpec {
   std::uint32_t id = 1;                      ///< >= 1, unique
   std::array<double, 4> initial_state{};     ///< [px m, vx m/s, py m, vy m/s] at the birth scan
   std::uint32_t birth_scan = 1;              ///< first scan it exists (inclusive)
   std::uint32_t death_scan = 1;              ///< last scan it exists (inclusive)
-  double snr = 1.0;                          ///< mean SNR, linear (sigma in spec 2.5; power mean 1 + snr)
+  double snr = 1.0;                          ///< mean SNR, linear (power mean 1 + snr; sigma in
+                                             ///< docs/algorithms/models.md §Inverse-gamma power belief)
   Swerling swerling = Swerling::kOne;
   std::vector<MotionSegment> motion;         ///< sorted by start_s
 };
 
-/// Time variation of a clutter component over its lifetime (spec 4.4, P104):
+/// Time variation of a clutter component over its lifetime (seed 000 eq. (104);
+/// docs/algorithms/scenarios.md §Seed 000):
 /// with f = (k - birth) / (death - birth) in [0, 1],
 ///   mean count  lambda_k = (1 + count_sin_amplitude * sin(pi f)) * mean_count
 ///   covariance  Cov_k    = (cov_scale_start + (cov_scale_end - cov_scale_start) f) * Cov_0
@@ -93,7 +96,7 @@ struct TimeVariation {
   double drift_azimuth_deg_s = 0.0;          ///< [deg/s]
 };
 
-/// One clutter component (spec 4.3 Table III). The uniform one covers the
+/// One clutter component (seed 000 Table III). The uniform one covers the
 /// region; a Gaussian one is N(mean, cov) in (range, azimuth) space with
 /// cov = [[sr^2, rho sr saz], [rho sr saz, saz^2]]. Per-scan counts are Poisson.
 struct ClutterSpec {
@@ -126,9 +129,9 @@ struct ScenarioSpec {
   std::uint32_t num_scans = 1;               ///< scans 1..num_scans
   double scan_period_s = 1.25;               ///< T [s]
   Region region;
-  double sigma_range_m = 20.0;               ///< measurement noise std (spec 2.6)
+  double sigma_range_m = 20.0;               ///< measurement noise std (seed 000 Sec. IV-A)
   double sigma_azimuth_deg = 0.6;
-  double threshold = 0.715;                  ///< amplitude detection threshold d (spec 4.2)
+  double threshold = 0.715;                  ///< amplitude detection threshold d (seed 000 Sec. IV-A)
   std::uint32_t eval_first_scan = 1;         ///< evaluation interval [first, last] (inclusive)
   std::uint32_t eval_last_scan = 1;
   std::vector<TargetSpec> targets;
