@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mptrack/scenario/generator.h"
+#include "mptrack/validate.h"
 #include "tracker_adapter.h"
 
 namespace mptrack::sim {
@@ -46,7 +47,13 @@ class CoreTrackerAdapter : public TrackerAdapter {
   /// Hook run before each step (e.g. the known clutter map of mfbp-kce).
   virtual void before_step(std::uint32_t /*scan*/) {}
 
+  /// Initialises the tracker; on refusal the message names the field and
+  /// the rule it broke (Tracker::validate, tracker_contract.h).
   std::string init_tracker(const Params& params) {
+    ParamError where;
+    if (Tracker::validate(params, &where) != Status::kOk) {
+      return std::string("invalid tracker parameter ") + where.field + ": needs " + where.rule;
+    }
     const Status st = tracker_->init(params);
     return st == Status::kOk ? std::string() : std::string("init failed: ") + to_string(st);
   }

@@ -17,7 +17,7 @@
 //   extract   PHD: components with w > extract_threshold;
 //             CPHD: the MAP cardinality's heaviest components.
 // The clutter model is the same object for the three filters (mode chosen
-// by FilterParams::clutter_mode).
+// by RfsFilterParams::clutter_mode).
 //
 // Caps: kMaxComponents = 2 kMaxTargets after reduction; the update works in
 // a buffer of kMaxWork components. Overflow policy there: when it is full a
@@ -36,7 +36,7 @@
 #include "mptrack/rfs/filter_common.h"
 #include "mptrack/rfs/log_sum.h"
 #include "mptrack/rfs/mixture.h"
-#include "mptrack/phd/phd_params.h"
+#include "mptrack/rfs/rfs_params.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -50,7 +50,7 @@ class PhdFilter {
 
  public:
   using Scalar = T;
-  using Params = FilterParams<T>;
+  using Params = RfsFilterParams<T>;
   using ScanType = Scan<T, Caps::kMaxMeasurements>;
   using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
   using OutputQueue = StaticVector<Estimate, 1>;
@@ -62,10 +62,14 @@ class PhdFilter {
   static constexpr std::size_t kMaxWork = 2 * kMaxPredicted;
   static constexpr std::size_t kMaxCardinality = Caps::kMaxTargets;
 
-  /// Validates p and resets everything.
+  /// Checks p (RfsFilterParams::validate; no field depends on Caps); on
+  /// failure names the field in *where (validate.h).
+  static Status validate(const Params& p, ParamError* where = nullptr) { return p.validate(where); }
+
+  /// Validates p (validate() above) and resets everything.
   Status init(const Params& p) {
     initialized_ = false;
-    MPTRACK_TRY(p.validate());
+    MPTRACK_TRY(validate(p));
     params_ = p;
     model_ = p.measurement_model();
     gate_ = rfs::chi2_gate_2dof(p.gate_probability);
@@ -73,7 +77,7 @@ class PhdFilter {
     reduction_.prune_threshold = p.prune_threshold;
     reduction_.merge_threshold = p.merge_threshold;
     reduction_.merge_threshold_power = p.merge_threshold_power;
-    reduction_.use_power = p.use_amplitude;
+    reduction_.use_power = p.amplitude.use_amplitude;
     reduction_.max_alpha = p.max_alpha;
     components_.clear();
     births_.clear();
@@ -352,7 +356,7 @@ class PhdFilter {
     r.state = c.x;
     r.covariance = c.P;
     r.existence = c.weight < T(1) ? c.weight : T(1);
-    r.snr = params_.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
+    r.snr = params_.amplitude.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
     r.confirmed = true;
     r.measurement_index = c.measurement;
     return e.tracks.push_back(r);
@@ -388,9 +392,15 @@ class PhdFilter {
   OutputQueue outputs_;
 };
 
-template <class T, class Caps = DefaultCaps>
-using GmPhdFilter = PhdFilter<T, Caps, false>;
-template <class T, class Caps = DefaultCaps>
-using GmCphdFilter = PhdFilter<T, Caps, true>;
-
 }  // namespace mptrack::phd
+
+namespace mptrack {
+
+/// GM-PHD filter with amplitude information (seed 001).
+template <class T, class Caps = DefaultCaps>
+using GmPhdFilter = phd::PhdFilter<T, Caps, false>;
+/// GM-CPHD filter with amplitude information (seed 001; Vo, Vo, Cantoni 2007).
+template <class T, class Caps = DefaultCaps>
+using GmCphdFilter = phd::PhdFilter<T, Caps, true>;
+
+}  // namespace mptrack
