@@ -55,8 +55,8 @@ struct PolarRegion {
 
   /// Bounds included; NaN is outside.
   bool contains(T range_m, T azimuth_rad) const {
-    return !(range_m < range_min_m) && !(range_m > range_max_m) && !(azimuth_rad < azimuth_min_rad) &&
-           !(azimuth_rad > azimuth_max_rad);
+    return range_m >= range_min_m && range_m <= range_max_m && azimuth_rad >= azimuth_min_rad &&
+           azimuth_rad <= azimuth_max_rad;
   }
 
   Status validate(ParamError* where) const {
@@ -84,7 +84,7 @@ struct CartesianRegion {
 
   /// Bounds included; NaN is outside.
   bool contains(T x_m, T y_m) const {
-    return !(x_m < x_min_m) && !(x_m > x_max_m) && !(y_m < y_min_m) && !(y_m > y_max_m);
+    return x_m >= x_min_m && x_m <= x_max_m && y_m >= y_min_m && y_m <= y_max_m;
   }
 
   Status validate(ParamError* where) const {
