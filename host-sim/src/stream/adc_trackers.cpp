@@ -76,10 +76,7 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
   std::string init(const TrackerSetup& setup) override {
     const scenario::ScenarioSpec& s = setup.spec;
     MfbpParams<double> p = seed000_default_params<double>();
-    p.region.range_min_m = s.region.range_min_m;
-    p.region.range_max_m = s.region.range_max_m;
-    p.region.azimuth_min_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
-    p.region.azimuth_max_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+    p.region = scenario_region(s);
     p.scan_period_s = s.scan_period_s;
     // Tuned on seed004-drones, 20 runs (docs/results/seed004.md). The limit
     // is the front end, not the SNR model: drones 1 and 2 share a range /
@@ -144,12 +141,8 @@ class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, Default
   std::string init(const TrackerSetup& setup) override {
     const scenario::ScenarioSpec& s = setup.spec;
     GnnParams<double> p;  // defaults: seed 004 spec 2.5
-    p.noise.range_std_m = s.sigma_range_m;
-    p.noise.azimuth_std_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
-    p.region.range_min_m = s.region.range_min_m;
-    p.region.range_max_m = s.region.range_max_m;
-    p.region.azimuth_min_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
-    p.region.azimuth_max_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+    set_scenario_noise(s, p.noise);
+    p.region = scenario_region(s);
     return init_tracker(p);
   }
 };

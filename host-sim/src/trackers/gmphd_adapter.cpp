@@ -39,12 +39,8 @@ RfsFilterParams<double> params_for(const TrackerSetup& setup, const std::string&
   const scenario::ScenarioSpec& s = setup.spec;
   RfsFilterParams<double> p;
   p.space = MeasurementSpace::kPolar;
-  p.noise.range_std_m = s.sigma_range_m;
-  p.noise.azimuth_std_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
-  p.region.range_min_m = s.region.range_min_m;
-  p.region.range_max_m = s.region.range_max_m;
-  p.region.azimuth_min_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
-  p.region.azimuth_max_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+  set_scenario_noise(s, p.noise);
+  p.region = scenario_region(s);
   p.scan_period_s = s.scan_period_s;
   p.accel_var_m2ps4 = 1.0;  // (1 m/s^2)^2: seed 000 maneuvers reach 0.33 m/s^2 (as the gnn adapter)
   p.birth_velocity_std_mps = 60.0;   // v_max 120 m/s / 2 (seed 000 spec 4.5)

@@ -17,12 +17,8 @@ class GnnAdapter final : public CoreTrackerAdapter<Tracker> {
   std::string init(const TrackerSetup& setup) override {
     const scenario::ScenarioSpec& s = setup.spec;
     GnnParams<double> p;
-    p.noise.range_std_m = s.sigma_range_m;
-    p.noise.azimuth_std_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
-    p.region.range_min_m = s.region.range_min_m;
-    p.region.range_max_m = s.region.range_max_m;
-    p.region.azimuth_min_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
-    p.region.azimuth_max_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+    set_scenario_noise(s, p.noise);
+    p.region = scenario_region(s);
     p.accel_var_m2ps4 = 1.0;          // (1 m/s^2)^2: seed 000 maneuvers reach 0.33 m/s^2
     p.init_velocity_std_mps = 60.0;   // v_max = 120 m/s (spec 4.5) / 2
     return init_tracker(p);

@@ -39,13 +39,9 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
     spec_ = setup.spec;
     scale_ = setup.clutter_scale;
     MfbpParams<double> p = seed000_default_params<double>();
-    p.region.range_min_m = spec_.region.range_min_m;
-    p.region.range_max_m = spec_.region.range_max_m;
-    p.region.azimuth_min_rad = scenario::deg_to_rad(spec_.region.azimuth_min_deg);
-    p.region.azimuth_max_rad = scenario::deg_to_rad(spec_.region.azimuth_max_deg);
+    p.region = scenario_region(spec_);
     p.scan_period_s = spec_.scan_period_s;
-    p.noise.range_std_m = spec_.sigma_range_m;
-    p.noise.azimuth_std_rad = scenario::deg_to_rad(spec_.sigma_azimuth_deg);
+    set_scenario_noise(spec_, p.noise);
     p.amplitude.threshold = spec_.threshold;
     p.amplitude.swerling = scenario_swerling(spec_);
     p.uniform_rate_per_scan = uniform_rate(spec_, scale_);
