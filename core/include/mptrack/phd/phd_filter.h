@@ -66,6 +66,9 @@ class PhdFilter {
   /// failure names the field in *where (validate.h).
   static Status validate(const Params& p, ParamError* where = nullptr) { return p.validate(where); }
 
+  /// The params of the last successful init().
+  const Params& params() const { return params_; }
+
   /// Validates p (validate() above) and resets everything.
   Status init(const Params& p) {
     initialized_ = false;
