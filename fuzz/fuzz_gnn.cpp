@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   p.report_tentative = (in.u8() & 1u) != 0;
   FUZZ_CHECK(g_a.init(p) == mptrack::Status::kOk);
   FUZZ_CHECK(g_b.init(p) == mptrack::Status::kOk);
-  const mptrack::fuzz::Region reg{p.min_range_m, p.max_range_m, p.min_azimuth_rad, p.max_azimuth_rad};
+  const mptrack::fuzz::Region reg{p.region.range_min_m, p.region.range_max_m, p.region.azimuth_min_rad, p.region.azimuth_max_rad};
   mptrack::fuzz::run_twin(in, reg, g_a, g_b, 256, g_scan, g_prev);
   for (const auto& t : g_a.tracks()) FUZZ_CHECK(mptrack::fuzz::is_spd(t.P));
   return 0;

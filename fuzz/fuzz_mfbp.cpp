@@ -31,13 +31,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 1: p.window_length = 3; p.slide = 1; break;
     default: p.window_length = 7; p.slide = 3; break;
   }
-  p.use_amplitude = (cfg & 0x10u) == 0;
+  p.amplitude.use_amplitude = (cfg & 0x10u) == 0;
   p.clutter_mode = (cfg & 0x20u) == 0 ? mptrack::ClutterMode::kEstimate
                                        : mptrack::ClutterMode::kUniformKnownRate;
   p.bp_max_iterations = 50;  // bounded time per execution
   FUZZ_CHECK(g_a.init(p) == mptrack::Status::kOk);
   FUZZ_CHECK(g_b.init(p) == mptrack::Status::kOk);
-  const mptrack::fuzz::Region reg{p.r_min_m, p.r_max_m, p.az_min_rad, p.az_max_rad};
+  const mptrack::fuzz::Region reg{p.region.range_min_m, p.region.range_max_m, p.region.azimuth_min_rad,
+                                  p.region.azimuth_max_rad};
   mptrack::fuzz::run_twin(in, reg, g_a, g_b, 40, g_scan, g_prev);
   FUZZ_CHECK(g_a.live_tracks() <= FuzzMfbpCaps::kMaxTargets);
   return 0;

@@ -1,5 +1,5 @@
 // libFuzzer harness: params validation (docs/reliability.md). Starts from
-// the defaults of GnnParams, MfbpParams, FilterParams (PHD/CPHD/CBMeMBer)
+// the defaults of GnnParams, MfbpParams, RfsFilterParams (PHD/CPHD/CBMeMBer)
 // and FrontEndParams and lets the input replace any field by a special
 // value (NaN, Inf, 0, -1, huge, denormal), a scaled default or raw bits.
 // Whatever init() accepts must then run a few scans without a crash, a
@@ -72,9 +72,9 @@ void mutate_enum(FuzzReader& in, E& e) {  // any underlying value, invalid ones 
 
 mptrack::GnnTracker<float, TinyCaps> g_gnn;
 mptrack::MfbpTracker<float, TinyCaps> g_mfbp;
-mptrack::phd::GmPhdFilter<float, TinyCaps> g_phd;
-mptrack::phd::GmCphdFilter<float, TinyCaps> g_cphd;
-mptrack::cbmember::CbMemberFilter<float, TinyCaps> g_cbm;
+mptrack::GmPhdFilter<float, TinyCaps> g_phd;
+mptrack::GmCphdFilter<float, TinyCaps> g_cphd;
+mptrack::CbMemberFilter<float, TinyCaps> g_cbm;
 mptrack::frontend::FrontEnd<TinyRadarCaps> g_fe;
 mptrack::frontend::RadarCubeInt16<TinyRadarCaps> g_cube;
 mptrack::Scan<float, 8> g_scan;
@@ -106,24 +106,28 @@ void run_scans(Tracker& t, float r0, float r1, float a0, float a1) {
 
 void fuzz_gnn(FuzzReader& in) {
   mptrack::GnnParams<float> p;
-  mutate(in, p.accel_std_mps2); mutate(in, p.sigma_range_m); mutate(in, p.sigma_azimuth_rad);
+  mutate(in, p.accel_var_m2ps4); mutate(in, p.noise.range_std_m);
+  mutate(in, p.noise.azimuth_std_rad);
   mutate(in, p.init_velocity_std_mps); mutate(in, p.gate_chi2); mutate(in, p.confirm_hits);
   mutate(in, p.confirm_window); mutate(in, p.max_misses); mutate(in, p.report_tentative);
-  mutate(in, p.min_range_m); mutate(in, p.max_range_m); mutate(in, p.min_azimuth_rad);
-  mutate(in, p.max_azimuth_rad); mutate(in, p.min_variance); mutate(in, p.max_gap_s);
+  mutate(in, p.region.range_min_m); mutate(in, p.region.range_max_m);
+  mutate(in, p.region.azimuth_min_rad); mutate(in, p.region.azimuth_max_rad);
+  mutate(in, p.min_variance); mutate(in, p.max_gap_s);
   if (g_gnn.init(p) != Status::kOk) return;
-  run_scans(g_gnn, p.min_range_m, p.max_range_m, p.min_azimuth_rad, p.max_azimuth_rad);
+  run_scans(g_gnn, p.region.range_min_m, p.region.range_max_m, p.region.azimuth_min_rad,
+            p.region.azimuth_max_rad);
 }
 
 void fuzz_mfbp(FuzzReader& in) {
   mptrack::MfbpParams<float> p;
   p.bp_max_iterations = 50;
-  mutate(in, p.r_min_m); mutate(in, p.r_max_m); mutate(in, p.az_min_rad); mutate(in, p.az_max_rad);
-  mutate(in, p.scan_period_s); mutate(in, p.process_noise_var); mutate(in, p.sigma_r_m);
-  mutate(in, p.sigma_az_rad); mutate(in, p.gate_chi2); mutate(in, p.association_cavity);
-  mutate(in, p.clutter_gate_chi2); mutate(in, p.use_doppler); mutate(in, p.sigma_doppler_mps);
-  mutate(in, p.doppler_span_mps); mutate(in, p.amplitude_threshold); mutate(in, p.swerling);
-  mutate(in, p.use_amplitude); mutate(in, p.pd_no_amplitude); mutate_enum(in, p.pd_model);
+  mutate(in, p.region.range_min_m); mutate(in, p.region.range_max_m);
+  mutate(in, p.region.azimuth_min_rad); mutate(in, p.region.azimuth_max_rad);
+  mutate(in, p.scan_period_s); mutate(in, p.accel_var_m2ps4); mutate(in, p.noise.range_std_m);
+  mutate(in, p.noise.azimuth_std_rad); mutate(in, p.gate_chi2); mutate(in, p.association_cavity);
+  mutate(in, p.clutter_gate_chi2); mutate(in, p.use_doppler); mutate(in, p.noise.doppler_std_mps);
+  mutate(in, p.doppler_span_mps); mutate(in, p.amplitude.threshold); mutate(in, p.amplitude.swerling);
+  mutate(in, p.amplitude.use_amplitude); mutate(in, p.pd_no_amplitude); mutate_enum(in, p.pd_model);
   mutate_enum(in, p.amp_loglik); mutate_enum(in, p.snr_update); mutate(in, p.forgetting_target);
   mutate(in, p.forgetting_clutter); mutate(in, p.ig_birth_shape); mutate(in, p.ig_birth_scale_factor);
   mutate(in, p.p_survive); mutate(in, p.p_birth); mutate(in, p.pd_invisible);
@@ -148,16 +152,21 @@ void fuzz_mfbp(FuzzReader& in) {
   mutate(in, p.clutter_death_count); mutate(in, p.clutter_death_windows);
   if (p.bp_max_iterations > 200) return;  // time bound only (valid, but slow)
   if (g_mfbp.init(p) != Status::kOk) return;
-  run_scans(g_mfbp, p.r_min_m, p.r_max_m, p.az_min_rad, p.az_max_rad);
+  run_scans(g_mfbp, p.region.range_min_m, p.region.range_max_m, p.region.azimuth_min_rad,
+            p.region.azimuth_max_rad);
 }
 
 void fuzz_filter_params(FuzzReader& in, std::uint8_t which) {
-  mptrack::phd::FilterParams<float> p;
-  mutate_enum(in, p.space); mutate(in, p.sigma_r_m); mutate(in, p.sigma_az_rad);
-  mutate(in, p.region_min0); mutate(in, p.region_max0); mutate(in, p.region_min1);
-  mutate(in, p.region_max1); mutate(in, p.scan_period_s); mutate(in, p.accel_std_mps2);
+  mptrack::RfsFilterParams<float> p;
+  mutate_enum(in, p.space); mutate(in, p.noise.range_std_m); mutate(in, p.noise.azimuth_std_rad);
+  mutate(in, p.region.range_min_m); mutate(in, p.region.range_max_m);
+  mutate(in, p.region.azimuth_min_rad); mutate(in, p.region.azimuth_max_rad);
+  mutate(in, p.cartesian_std_m); mutate(in, p.cartesian_region.x_min_m);
+  mutate(in, p.cartesian_region.x_max_m); mutate(in, p.cartesian_region.y_min_m);
+  mutate(in, p.cartesian_region.y_max_m); mutate(in, p.scan_period_s); mutate(in, p.accel_var_m2ps4);
   mutate(in, p.survival_prob); mutate(in, p.birth_rate); mutate(in, p.birth_velocity_std_mps);
-  mutate(in, p.use_amplitude); mutate(in, p.threshold); mutate(in, p.swerling_order);
+  mutate(in, p.amplitude.use_amplitude); mutate(in, p.amplitude.threshold);
+  mutate(in, p.amplitude.swerling);
   mutate(in, p.target_power_prior); mutate(in, p.target_alpha_prior); mutate(in, p.power_forgetting);
   mutate(in, p.min_alpha); mutate(in, p.max_alpha); mutate(in, p.detection_prob);
   mutate_enum(in, p.clutter_mode); mutate(in, p.clutter_rate); mutate(in, p.weibull_shape);
@@ -166,19 +175,24 @@ void fuzz_filter_params(FuzzReader& in, std::uint8_t which) {
   mutate(in, p.hotspot_min_points); mutate(in, p.hotspot_min_rate); mutate(in, p.prune_threshold);
   mutate(in, p.merge_threshold); mutate(in, p.merge_threshold_power); mutate(in, p.gate_probability);
   mutate(in, p.extract_threshold); mutate(in, p.existence_prune); mutate(in, p.existence_extract);
-  mutate(in, p.max_gap_s); mutate(in, p.max_amplitude);
+  mutate(in, p.max_gap_s); mutate(in, p.amplitude.max_amplitude);
+  const bool polar = p.space == mptrack::MeasurementSpace::kPolar;
+  const float r0 = polar ? p.region.range_min_m : p.cartesian_region.x_min_m;
+  const float r1 = polar ? p.region.range_max_m : p.cartesian_region.x_max_m;
+  const float a0 = polar ? p.region.azimuth_min_rad : p.cartesian_region.y_min_m;
+  const float a1 = polar ? p.region.azimuth_max_rad : p.cartesian_region.y_max_m;
   switch (which % 3u) {
     case 0:
       if (g_phd.init(p) != Status::kOk) return;
-      run_scans(g_phd, p.region_min0, p.region_max0, p.region_min1, p.region_max1);
+      run_scans(g_phd, r0, r1, a0, a1);
       break;
     case 1:
       if (g_cphd.init(p) != Status::kOk) return;
-      run_scans(g_cphd, p.region_min0, p.region_max0, p.region_min1, p.region_max1);
+      run_scans(g_cphd, r0, r1, a0, a1);
       break;
     default:
       if (g_cbm.init(p) != Status::kOk) return;
-      run_scans(g_cbm, p.region_min0, p.region_max0, p.region_min1, p.region_max1);
+      run_scans(g_cbm, r0, r1, a0, a1);
       break;
   }
 }

@@ -177,8 +177,8 @@ int main(int argc, char** argv) {
   const scenario::ScenarioSpec spec = bench::seed000_s2();
   if (kind == "mfbp-filter") return drive<MfbpTracker<float>>(bench::mfbp_params_for<float>(spec, 1), spec, n);
   if (kind == "mfbp") return drive<MfbpTracker<float>>(bench::mfbp_params_for<float>(spec, 7), spec, n);
-  if (kind == "gmphd") return drive<phd::GmPhdFilter<float>>(bench::phd_params_for<float>(spec), spec, n);
-  if (kind == "gmcphd") return drive<phd::GmCphdFilter<float>>(bench::phd_params_for<float>(spec), spec, n);
+  if (kind == "gmphd") return drive<GmPhdFilter<float>>(bench::phd_params_for<float>(spec), spec, n);
+  if (kind == "gmcphd") return drive<GmCphdFilter<float>>(bench::phd_params_for<float>(spec), spec, n);
   if (kind == "gnn") return drive<GnnTracker<float>>(bench::gnn_params_for<float>(spec), spec, n);
   std::fprintf(stderr, "unknown tracker %s\n", kind.c_str());
   return 2;

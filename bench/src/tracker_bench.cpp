@@ -51,7 +51,7 @@ template <class Tracker, class T>
 typename Tracker::Params params_for(Kind k, const scenario::ScenarioSpec& s) {
   if constexpr (std::is_same_v<typename Tracker::Params, MfbpParams<T>>) {
     return mfbp_params_for<T>(s, k == Kind::kMfbpFilter ? 1 : 7);
-  } else if constexpr (std::is_same_v<typename Tracker::Params, phd::FilterParams<T>>) {
+  } else if constexpr (std::is_same_v<typename Tracker::Params, RfsFilterParams<T>>) {
     return phd_params_for<T>(s);
   } else {
     return gnn_params_for<T>(s);
@@ -192,8 +192,8 @@ void register_s2(Kind kind) {
     switch (kind) {
       case Kind::kMfbpFilter:
       case Kind::kMfbpSmoother: bm_s2<MfbpTracker<T, DefaultCaps>, T>(st, kind); break;
-      case Kind::kGmPhd: bm_s2<phd::GmPhdFilter<T, DefaultCaps>, T>(st, kind); break;
-      case Kind::kGmCphd: bm_s2<phd::GmCphdFilter<T, DefaultCaps>, T>(st, kind); break;
+      case Kind::kGmPhd: bm_s2<GmPhdFilter<T, DefaultCaps>, T>(st, kind); break;
+      case Kind::kGmCphd: bm_s2<GmCphdFilter<T, DefaultCaps>, T>(st, kind); break;
       case Kind::kGnn: bm_s2<GnnTracker<T, DefaultCaps>, T>(st, kind); break;
     }
   };
@@ -209,8 +209,8 @@ void register_grid(Kind kind, const Workload& w) {
     switch (kind) {
       case Kind::kMfbpFilter:
       case Kind::kMfbpSmoother: bm_grid<MfbpTracker<T, BenchCaps>, T>(st, kind, w); break;
-      case Kind::kGmPhd: bm_grid<phd::GmPhdFilter<T, BenchCaps>, T>(st, kind, w); break;
-      case Kind::kGmCphd: bm_grid<phd::GmCphdFilter<T, BenchCaps>, T>(st, kind, w); break;
+      case Kind::kGmPhd: bm_grid<GmPhdFilter<T, BenchCaps>, T>(st, kind, w); break;
+      case Kind::kGmCphd: bm_grid<GmCphdFilter<T, BenchCaps>, T>(st, kind, w); break;
       case Kind::kGnn: bm_grid<GnnTracker<T, BenchCaps>, T>(st, kind, w); break;
     }
   };

@@ -17,7 +17,7 @@
 #include "mptrack/gnn/gnn_params.h"
 #include "mptrack/measurement.h"
 #include "mptrack/mfbp/mfbp_params.h"
-#include "mptrack/phd/phd_params.h"
+#include "mptrack/rfs/rfs_params.h"
 #include "mptrack/scenario/builtin.h"
 #include "mptrack/scenario/generator.h"
 
@@ -75,15 +75,15 @@ std::vector<std::unique_ptr<Scan<T, N>>> generate_scans(const scenario::Scenario
 template <class T>
 MfbpParams<T> mfbp_params_for(const scenario::ScenarioSpec& s, std::size_t window) {
   MfbpParams<T> p = seed000_default_params<T>();
-  p.r_min_m = T(s.region.range_min_m);
-  p.r_max_m = T(s.region.range_max_m);
-  p.az_min_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
-  p.az_max_rad = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
+  p.region.range_min_m = T(s.region.range_min_m);
+  p.region.range_max_m = T(s.region.range_max_m);
+  p.region.azimuth_min_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
+  p.region.azimuth_max_rad = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
   p.scan_period_s = T(s.scan_period_s);
-  p.sigma_r_m = T(s.sigma_range_m);
-  p.sigma_az_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
-  p.amplitude_threshold = T(s.threshold);
-  p.swerling = s.targets.empty() ? 1 : static_cast<int>(s.targets.front().swerling);
+  p.noise.range_std_m = T(s.sigma_range_m);
+  p.noise.azimuth_std_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
+  p.amplitude.threshold = T(s.threshold);
+  p.amplitude.swerling = s.targets.empty() ? 1 : static_cast<int>(s.targets.front().swerling);
   p.uniform_rate_per_scan = T(uniform_rate(s) > 0.0 ? uniform_rate(s) : 1.0);
   for (const auto& c : s.clutter) {
     if (c.uniform) {
@@ -100,21 +100,21 @@ MfbpParams<T> mfbp_params_for(const scenario::ScenarioSpec& s, std::size_t windo
 
 /// GM-PHD / GM-CPHD parameters for a polar scenario (as host-sim's gmphd adapter).
 template <class T>
-phd::FilterParams<T> phd_params_for(const scenario::ScenarioSpec& s) {
-  phd::FilterParams<T> p;
-  p.space = phd::MeasurementSpace::kPolar;
-  p.sigma_r_m = T(s.sigma_range_m);
-  p.sigma_az_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
-  p.region_min0 = T(s.region.range_min_m);
-  p.region_max0 = T(s.region.range_max_m);
-  p.region_min1 = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
-  p.region_max1 = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
+RfsFilterParams<T> phd_params_for(const scenario::ScenarioSpec& s) {
+  RfsFilterParams<T> p;
+  p.space = MeasurementSpace::kPolar;
+  p.noise.range_std_m = T(s.sigma_range_m);
+  p.noise.azimuth_std_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
+  p.region.range_min_m = T(s.region.range_min_m);
+  p.region.range_max_m = T(s.region.range_max_m);
+  p.region.azimuth_min_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
+  p.region.azimuth_max_rad = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
   p.scan_period_s = T(s.scan_period_s);
-  p.accel_std_mps2 = T(1);
+  p.accel_var_m2ps4 = T(1);
   p.birth_velocity_std_mps = T(60);
-  p.threshold = T(s.threshold);
+  p.amplitude.threshold = T(s.threshold);
   const bool sw3 = !s.targets.empty() && s.targets.front().swerling == scenario::Swerling::kThree;
-  p.swerling_order = sw3 ? 2 : 1;
+  p.amplitude.swerling = sw3 ? 3 : 1;
   double snr = 0.0;
   for (const auto& t : s.targets) snr += t.snr;
   p.target_power_prior = T(1.0 + (s.targets.empty() ? 10.0 : snr / static_cast<double>(s.targets.size())));
@@ -132,7 +132,7 @@ phd::FilterParams<T> phd_params_for(const scenario::ScenarioSpec& s) {
   p.clutter_scale = T(1.0 + cnr);
   p.hotspot_half_width0 = T(500);
   p.hotspot_half_width1 = T(scenario::deg_to_rad(2.0));
-  p.clutter_mode = phd::ClutterMode::kEstimatedMap;
+  p.clutter_mode = ClutterMode::kEstimatedMap;
   return p;
 }
 
@@ -140,13 +140,13 @@ phd::FilterParams<T> phd_params_for(const scenario::ScenarioSpec& s) {
 template <class T>
 GnnParams<T> gnn_params_for(const scenario::ScenarioSpec& s) {
   GnnParams<T> p;
-  p.sigma_range_m = T(s.sigma_range_m);
-  p.sigma_azimuth_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
-  p.min_range_m = T(s.region.range_min_m);
-  p.max_range_m = T(s.region.range_max_m);
-  p.min_azimuth_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
-  p.max_azimuth_rad = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
-  p.accel_std_mps2 = T(1);
+  p.noise.range_std_m = T(s.sigma_range_m);
+  p.noise.azimuth_std_rad = T(scenario::deg_to_rad(s.sigma_azimuth_deg));
+  p.region.range_min_m = T(s.region.range_min_m);
+  p.region.range_max_m = T(s.region.range_max_m);
+  p.region.azimuth_min_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
+  p.region.azimuth_max_rad = T(scenario::deg_to_rad(s.region.azimuth_max_deg));
+  p.accel_var_m2ps4 = T(1);
   p.init_velocity_std_mps = T(60);
   return p;
 }

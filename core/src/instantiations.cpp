@@ -51,7 +51,12 @@ template class MfbpTracker<double, DefaultCaps>;
 // IGGM baselines (seed 001): GM-PHD, GM-CPHD, CBMeMBer
 template class phd::PhdFilter<float, DefaultCaps, false>;
 template class phd::PhdFilter<float, DefaultCaps, true>;
-template class cbmember::CbMemberFilter<float, DefaultCaps>;
+template class CbMemberFilter<float, DefaultCaps>;
+
+// Params structs and their validate() (tracker_params.h blocks)
+template struct GnnParams<float>;
+template struct MfbpParams<float>;
+template struct RfsFilterParams<float>;
 
 static_assert(caps_are_valid<DefaultCaps>());
 static_assert(caps_are_valid<SmallBoardCaps>());

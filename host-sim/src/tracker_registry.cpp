@@ -53,12 +53,12 @@ std::vector<TrackerFootprint> tracker_footprints() {
                  sizeof(MfbpTracker<double, DefaultCaps>)});
   out.push_back({"GnnTracker<T, DefaultCaps>", sizeof(GnnTracker<float, DefaultCaps>),
                  sizeof(GnnTracker<double, DefaultCaps>)});
-  out.push_back({"phd::GmPhdFilter<T, DefaultCaps>", sizeof(phd::GmPhdFilter<float, DefaultCaps>),
-                 sizeof(phd::GmPhdFilter<double, DefaultCaps>)});
-  out.push_back({"phd::GmCphdFilter<T, DefaultCaps>", sizeof(phd::GmCphdFilter<float, DefaultCaps>),
-                 sizeof(phd::GmCphdFilter<double, DefaultCaps>)});
-  out.push_back({"cbmember::CbMemberFilter<T, DefaultCaps>", sizeof(cbmember::CbMemberFilter<float, DefaultCaps>),
-                 sizeof(cbmember::CbMemberFilter<double, DefaultCaps>)});
+  out.push_back({"GmPhdFilter<T, DefaultCaps>", sizeof(GmPhdFilter<float, DefaultCaps>),
+                 sizeof(GmPhdFilter<double, DefaultCaps>)});
+  out.push_back({"GmCphdFilter<T, DefaultCaps>", sizeof(GmCphdFilter<float, DefaultCaps>),
+                 sizeof(GmCphdFilter<double, DefaultCaps>)});
+  out.push_back({"CbMemberFilter<T, DefaultCaps>", sizeof(CbMemberFilter<float, DefaultCaps>),
+                 sizeof(CbMemberFilter<double, DefaultCaps>)});
   return out;
 }
 

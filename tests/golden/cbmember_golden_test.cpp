@@ -16,10 +16,10 @@ namespace {
 const phdtest::Truth kTruth[2] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0, 10.0}};
 
 template <class T>
-void record(test::GoldenFile& g, const std::string& tag, phd::ClutterMode mode) {
-  auto f = std::make_unique<cbmember::CbMemberFilter<T>>();
-  phd::FilterParams<T> p;
-  p.threshold = T(phdtest::kThreshold);
+void record(test::GoldenFile& g, const std::string& tag, ClutterMode mode) {
+  auto f = std::make_unique<CbMemberFilter<T>>();
+  RfsFilterParams<T> p;
+  p.amplitude.threshold = T(phdtest::kThreshold);
   p.clutter_mode = mode;
   REQUIRE(f->init(p) == Status::kOk);
   auto scan_d = std::make_unique<Scan<double, DefaultCaps::kMaxMeasurements>>();
@@ -52,8 +52,8 @@ void record(test::GoldenFile& g, const std::string& tag, phd::ClutterMode mode) 
 
 TEST_CASE("CBMeMBer golden record") {
   test::GoldenFile g("cbmember_filter");
-  record<double>(g, "cbm.d.est", phd::ClutterMode::kEstimatedUniform);
-  record<float>(g, "cbm.f.map", phd::ClutterMode::kEstimatedMap);
+  record<double>(g, "cbm.d.est", ClutterMode::kEstimatedUniform);
+  record<float>(g, "cbm.f.map", ClutterMode::kEstimatedMap);
   CHECK(g.size() > 50);
   CHECK(g.matches());
 }

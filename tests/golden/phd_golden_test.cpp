@@ -17,10 +17,10 @@ namespace {
 const phdtest::Truth kTruth[2] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0, 10.0}};
 
 template <class T, class Filter>
-void record(test::GoldenFile& g, const std::string& tag, phd::ClutterMode mode) {
+void record(test::GoldenFile& g, const std::string& tag, ClutterMode mode) {
   auto f = std::make_unique<Filter>();
-  phd::FilterParams<T> p;
-  p.threshold = T(phdtest::kThreshold);
+  RfsFilterParams<T> p;
+  p.amplitude.threshold = T(phdtest::kThreshold);
   p.clutter_mode = mode;
   REQUIRE(f->init(p) == Status::kOk);
   auto scan_d = std::make_unique<Scan<double, DefaultCaps::kMaxMeasurements>>();
@@ -54,10 +54,10 @@ void record(test::GoldenFile& g, const std::string& tag, phd::ClutterMode mode) 
 
 TEST_CASE("GM-PHD and GM-CPHD golden record") {
   test::GoldenFile g("phd_filters");
-  record<double, phd::GmPhdFilter<double>>(g, "phd.d.est", phd::ClutterMode::kEstimatedUniform);
-  record<double, phd::GmCphdFilter<double>>(g, "cphd.d.map", phd::ClutterMode::kEstimatedMap);
-  record<float, phd::GmPhdFilter<float>>(g, "phd.f.known", phd::ClutterMode::kKnownUniform);
-  record<float, phd::GmCphdFilter<float>>(g, "cphd.f.est", phd::ClutterMode::kEstimatedUniform);
+  record<double, GmPhdFilter<double>>(g, "phd.d.est", ClutterMode::kEstimatedUniform);
+  record<double, GmCphdFilter<double>>(g, "cphd.d.map", ClutterMode::kEstimatedMap);
+  record<float, GmPhdFilter<float>>(g, "phd.f.known", ClutterMode::kKnownUniform);
+  record<float, GmCphdFilter<float>>(g, "cphd.f.est", ClutterMode::kEstimatedUniform);
   CHECK(g.size() > 100);
   CHECK(g.matches());
 }

@@ -163,13 +163,13 @@ int main(int argc, char** argv) {
   if (scans < 10) scans = 10;
 
   Gnn::Params gp;
-  gp.min_range_m = static_cast<float>(kRMin);
-  gp.max_range_m = static_cast<float>(kRMax);
-  gp.min_azimuth_rad = static_cast<float>(kAzMin);
-  gp.max_azimuth_rad = static_cast<float>(kAzMax);
-  gp.sigma_range_m = 20.0f;
-  gp.sigma_azimuth_rad = 0.0104720f;
-  gp.accel_std_mps2 = 1.0f;
+  gp.region.range_min_m = static_cast<float>(kRMin);
+  gp.region.range_max_m = static_cast<float>(kRMax);
+  gp.region.azimuth_min_rad = static_cast<float>(kAzMin);
+  gp.region.azimuth_max_rad = static_cast<float>(kAzMax);
+  gp.noise.range_std_m = 20.0f;
+  gp.noise.azimuth_std_rad = 0.0104720f;
+  gp.accel_var_m2ps4 = 1.0f;
   gp.init_velocity_std_mps = 100.0f;
   Mfbp::Params mp;
   mp.window_length = 1;

@@ -16,9 +16,9 @@ const phdtest::Truth kTruth[2] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0
 }
 
 TEST_CASE("CBMeMBer tracks two targets and its cardinality sums to about 2") {
-  auto f = std::make_unique<cbmember::CbMemberFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
-  p.clutter_mode = phd::ClutterMode::kEstimatedUniform;
+  auto f = std::make_unique<CbMemberFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kEstimatedUniform;
   REQUIRE(f->init(p) == Status::kOk);
   auto scan = std::make_unique<ScanD>();
   int good = 0;
@@ -47,7 +47,7 @@ TEST_CASE("CBMeMBer tracks two targets and its cardinality sums to about 2") {
 }
 
 TEST_CASE("CBMeMBer step() does not allocate and labels are unique per scan") {
-  auto f = std::make_unique<cbmember::CbMemberFilter<double>>();
+  auto f = std::make_unique<CbMemberFilter<double>>();
   REQUIRE(f->init(phdtest::seed001_params()) == Status::kOk);
   auto scan = std::make_unique<ScanD>();
   std::size_t allocs = 0;
@@ -67,8 +67,8 @@ TEST_CASE("CBMeMBer step() does not allocate and labels are unique per scan") {
 }
 
 TEST_CASE("CBMeMBer rejects invalid params and out-of-order scans") {
-  auto f = std::make_unique<cbmember::CbMemberFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
+  auto f = std::make_unique<CbMemberFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
   p.existence_prune = 0.0;
   CHECK(f->init(p) == Status::kInvalidArgument);
   REQUIRE(f->init(phdtest::seed001_params()) == Status::kOk);

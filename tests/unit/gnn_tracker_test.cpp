@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "alloc_guard.h"
@@ -158,8 +159,8 @@ TEST_CASE("GNN: two crossing targets keep their IDs with moderate noise") {
   // Seed 004 tracks 1 and 2 (seed 004 Sec. V-A): they cross at scan ~21 with a
   // minimum separation of ~0.2 m, at right angles.
   Tracker::Params p;
-  p.sigma_range_m = 0.1f;
-  p.sigma_azimuth_rad = 0.003f;
+  p.noise.range_std_m = 0.1f;
+  p.noise.azimuth_std_rad = 0.003f;
   auto trk = make_tracker(p);
   Lcg rng{20240607u};
   const float vc = 4.95f;
@@ -231,7 +232,7 @@ TEST_CASE("GNN: sparse clutter alone never produces a confirmed track") {
 TEST_CASE("GNN: NaN, Inf and out-of-region measurements are skipped and counted") {
   Tracker::Params p;
   p.report_tentative = true;
-  p.max_range_m = 100.0f;
+  p.region.range_max_m = 100.0f;
   auto trk = make_tracker(p);
   mptrack::Measurement<float> nan_m = measure(Point{10.0f, 10.0f});
   nan_m.range_m = std::numeric_limits<float>::quiet_NaN();
@@ -296,10 +297,10 @@ TEST_CASE("GNN: init rejects bad parameters and step before init is refused") {
   p.confirm_hits = 6;  // M > N
   CHECK(trk->init(p) == Status::kInvalidArgument);
   p = Tracker::Params{};
-  p.sigma_range_m = 0.0f;
+  p.noise.range_std_m = 0.0f;
   CHECK(trk->init(p) == Status::kInvalidArgument);
   p = Tracker::Params{};
-  p.min_range_m = 300.0f;  // above max_range_m
+  p.region.range_min_m = 300.0f;  // above region.range_max_m
   CHECK(trk->init(p) == Status::kInvalidArgument);
   p = Tracker::Params{};
   p.gate_chi2 = std::numeric_limits<float>::quiet_NaN();
@@ -307,6 +308,9 @@ TEST_CASE("GNN: init rejects bad parameters and step before init is refused") {
   p = Tracker::Params{};
   p.confirm_window = 33;
   CHECK(trk->init(p) == Status::kInvalidArgument);
+  mptrack::ParamError where;
+  CHECK(Tracker::validate(p, &where) == Status::kInvalidArgument);
+  CHECK(std::string(where.field) == "confirm_window");
   CHECK(trk->step(make_scan(0, {})) == Status::kNotInitialized);
   CHECK(trk->init(Tracker::Params{}) == Status::kOk);
   CHECK(trk->step(make_scan(0, {})) == Status::kOk);

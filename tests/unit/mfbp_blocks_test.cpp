@@ -12,10 +12,11 @@
 #include "mptrack/mfbp/amplitude_model.h"
 #include "mptrack/mfbp/association_bp.h"
 #include "mptrack/mfbp/cubature.h"
-#include "mptrack/mfbp/inverse_gamma.h"
 #include "mptrack/mfbp/normal_wishart.h"
 #include "mptrack/mfbp/target_filter.h"
 #include "mptrack/mfbp/visibility_hmm.h"
+#include "mptrack/model/cholesky.h"
+#include "mptrack/model/inverse_gamma.h"
 
 using namespace mptrack;
 using namespace mptrack::mfbp;
@@ -54,7 +55,7 @@ TEST_CASE("mfbp expected amplitude log-likelihood equals -n(ln b - psi(a)) - n(m
 }
 
 TEST_CASE("mfbp IG forgetting keeps the mean and the conjugate update converges to the true power") {
-  InverseGamma<double> ig;
+  model::InverseGamma<double> ig;
   ig.a = 3.0;
   ig.b = 8.0;  // mean 4
   const auto p = ig.predicted(1.05);
@@ -400,11 +401,11 @@ TEST_CASE("mfbp Normal-Wishart update equals Bishop 10.60-10.63") {
   CHECK(pred.expected_covariance()(0, 0) == doctest::Approx(post.expected_covariance()(0, 0)).epsilon(1e-12));
 }
 
-TEST_CASE("mfbp cholesky_whiten is forward substitution: L^-1 b") {
+TEST_CASE("model cholesky_whiten is forward substitution: L^-1 b") {
   // L = [[2, 0], [1, 3]], b = [4, 7]: y0 = 4 / 2 = 2, y1 = (7 - 1 * 2) / 3 = 5/3.
   Eigen::Matrix2d L;
   L << 2.0, 0.0, 1.0, 3.0;
-  const Eigen::Vector2d y = mfbp::cholesky_whiten<double, 2>(L, Eigen::Vector2d(4.0, 7.0));
+  const Eigen::Vector2d y = model::cholesky_whiten<double, 2>(L, Eigen::Vector2d(4.0, 7.0));
   CHECK(y(0) == 2.0);
   CHECK(y(1) == doctest::Approx(5.0 / 3.0).epsilon(1e-15));
 }

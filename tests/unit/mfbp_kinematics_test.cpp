@@ -160,7 +160,7 @@ TEST_CASE("mfbp coupling without pooling still scores symmetrically but updates 
 TEST_CASE("mfbp adaptive process noise follows a 0.33 m/s^2 turn that the paper's fixed 0.01 lags") {
   MfbpParams<double> adaptive = filter_params();
   MfbpParams<double> fixed = filter_params();
-  fixed.manoeuvre_noise_var_max = fixed.process_noise_var;
+  fixed.manoeuvre_noise_var_max = fixed.accel_var_m2ps4;
   // 80 scans (100 s) of turn, scored from mid-turn to 60 scans after it.
   const double e_adaptive = turn_error(adaptive, 20, 100, 40, 160);
   const double e_fixed = turn_error(fixed, 20, 100, 40, 160);
@@ -171,7 +171,7 @@ TEST_CASE("mfbp adaptive process noise follows a 0.33 m/s^2 turn that the paper'
 TEST_CASE("mfbp adaptive process noise stays at the quiet level on a CV target") {
   MfbpParams<double> adaptive = filter_params();
   MfbpParams<double> fixed = filter_params();
-  fixed.manoeuvre_noise_var_max = fixed.process_noise_var;
+  fixed.manoeuvre_noise_var_max = fixed.accel_var_m2ps4;
   // No turn; scored after the birth transient.
   const double e_adaptive = turn_error(adaptive, 0, 0, 60, 200);
   const double e_fixed = turn_error(fixed, 0, 0, 60, 200);

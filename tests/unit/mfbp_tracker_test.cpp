@@ -94,10 +94,10 @@ void check_tracking(const std::vector<Report>& reps, int settle, int scans) {
 
 template <class T, class Caps>
 std::unique_ptr<MfbpTracker<T, Caps>> make_tracker(std::size_t window, std::size_t slide,
-                                                   T process_noise_var = T(0)) {
+                                                   T accel_var_m2ps4 = T(0)) {
   auto trk = std::make_unique<MfbpTracker<T, Caps>>();
   MfbpParams<T> p = seed000_default_params<T>();
-  if (process_noise_var > T(0)) p.process_noise_var = process_noise_var;
+  if (accel_var_m2ps4 > T(0)) p.accel_var_m2ps4 = accel_var_m2ps4;
   p.window_length = window;
   p.slide = slide;
   p.uniform_rate_per_scan = T(kClutter);
@@ -211,7 +211,7 @@ TEST_CASE("mfbp init rejects bad params and step before init is refused") {
   p.slide = 0;
   CHECK(trk.init(p) == Status::kInvalidArgument);
   p = MfbpParams<float>{};
-  p.swerling = 2;
+  p.amplitude.swerling = 2;
   CHECK(trk.init(p) == Status::kInvalidArgument);
   p = MfbpParams<float>{};
   CHECK(trk.init(p) == Status::kOk);
@@ -225,7 +225,7 @@ TEST_CASE("mfbp ablations (KI, NCE, KCE, first iteration only) still track both 
     p.window_length = 1;
     p.slide = 1;
     p.uniform_rate_per_scan = float(kClutter);
-    if (variant == 0) p.use_amplitude = false;
+    if (variant == 0) p.amplitude.use_amplitude = false;
     if (variant == 1) p.clutter_mode = ClutterMode::kUniformKnownRate;
     if (variant == 2) {
       p.clutter_mode = ClutterMode::kKnown;

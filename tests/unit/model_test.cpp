@@ -390,16 +390,16 @@ TEST_CASE("one ClutterMode: MF-BP spellings alias, each tracker rejects modes it
   CHECK(ClutterMode::kEstimate == ClutterMode::kEstimatedMap);
   CHECK(ClutterMode::kUniformKnownRate == ClutterMode::kKnownRateUniform);
   CHECK(ClutterMode::kKnown == ClutterMode::kKnownMap);
-  rfs::FilterParams<double> gm;
+  RfsFilterParams<double> gm;
   CHECK(gm.validate() == Status::kOk);
   gm.clutter_mode = ClutterMode::kKnownMap;
   CHECK(gm.validate() == Status::kInvalidArgument);
   gm.clutter_mode = ClutterMode::kKnownRateUniform;
   CHECK(gm.validate() == Status::kInvalidArgument);
   MfbpParams<double> mf;
-  CHECK(validate(mf, 7) == Status::kOk);
+  CHECK(mf.validate() == Status::kOk);
   mf.clutter_mode = ClutterMode::kEstimatedUniform;
-  CHECK(validate(mf, 7) == Status::kInvalidArgument);
+  CHECK(mf.validate() == Status::kInvalidArgument);
   mf.clutter_mode = ClutterMode::kKnownUniform;
-  CHECK(validate(mf, 7) == Status::kInvalidArgument);
+  CHECK(mf.validate() == Status::kInvalidArgument);
 }

@@ -20,7 +20,7 @@ const phdtest::Truth kTruth[2] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0
 // Runs `scans` scans; returns the number of scans (from scan 10 on) whose
 // extracted tracks are exactly the two targets within 40 m each.
 template <class Filter>
-int run_two_targets(Filter& f, const phd::FilterParams<double>& p, int scans, int clutter) {
+int run_two_targets(Filter& f, const RfsFilterParams<double>& p, int scans, int clutter) {
   REQUIRE(f.init(p) == Status::kOk);
   auto scan = std::make_unique<ScanD>();
   int good = 0;
@@ -50,9 +50,9 @@ int run_two_targets(Filter& f, const phd::FilterParams<double>& p, int scans, in
 }  // namespace
 
 TEST_CASE("GM-PHD with amplitude tracks two targets in 40 clutter points per scan") {
-  auto f = std::make_unique<phd::GmPhdFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
-  p.clutter_mode = phd::ClutterMode::kEstimatedUniform;
+  auto f = std::make_unique<GmPhdFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kEstimatedUniform;
   const int good = run_two_targets(*f, p, 40, 40);
   // 30 evaluated scans; a PHD drops a track for a scan after a miss (P_D 0.98).
   CHECK(good >= 24);
@@ -60,9 +60,9 @@ TEST_CASE("GM-PHD with amplitude tracks two targets in 40 clutter points per sca
 }
 
 TEST_CASE("estimated uniform clutter rate converges to the true 40 per scan") {
-  auto f = std::make_unique<phd::GmPhdFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
-  p.clutter_mode = phd::ClutterMode::kEstimatedUniform;
+  auto f = std::make_unique<GmPhdFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kEstimatedUniform;
   p.clutter_rate = 10.0;  // wrong prior
   (void)run_two_targets(*f, p, 40, 40);
   CHECK(f->clutter().total_rate() == doctest::Approx(40.0).epsilon(0.1));
@@ -71,8 +71,8 @@ TEST_CASE("estimated uniform clutter rate converges to the true 40 per scan") {
 }
 
 TEST_CASE("GM-CPHD MAP cardinality is 2 and the tracks follow the targets") {
-  auto f = std::make_unique<phd::GmCphdFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
+  auto f = std::make_unique<GmCphdFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
   const int good = run_two_targets(*f, p, 40, 40);
   CHECK(good >= 24);
   CHECK(f->cardinality().map() == 2);
@@ -80,20 +80,20 @@ TEST_CASE("GM-CPHD MAP cardinality is 2 and the tracks follow the targets") {
 }
 
 TEST_CASE("amplitude suppresses clutter-born false tracks compared with kinematics only") {
-  auto with_amp = std::make_unique<phd::GmPhdFilter<double>>();
-  auto without = std::make_unique<phd::GmPhdFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
-  p.clutter_mode = phd::ClutterMode::kKnownUniform;
+  auto with_amp = std::make_unique<GmPhdFilter<double>>();
+  auto without = std::make_unique<GmPhdFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kKnownUniform;
   const int good_amp = run_two_targets(*with_amp, p, 40, 80);
-  p.use_amplitude = false;
+  p.amplitude.use_amplitude = false;
   const int good_ki = run_two_targets(*without, p, 40, 80);
   CHECK(good_amp > good_ki);
 }
 
 TEST_CASE("estimated clutter map finds a hot spot and its rate") {
-  auto f = std::make_unique<phd::GmPhdFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
-  p.clutter_mode = phd::ClutterMode::kEstimatedMap;
+  auto f = std::make_unique<GmPhdFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kEstimatedMap;
   REQUIRE(f->init(p) == Status::kOk);
   auto scan = std::make_unique<ScanD>();
   for (int k = 0; k < 30; ++k) {
@@ -118,9 +118,9 @@ TEST_CASE("estimated clutter map finds a hot spot and its rate") {
 }
 
 TEST_CASE("PHD and CPHD step() do not allocate") {
-  auto phd_f = std::make_unique<phd::GmPhdFilter<double>>();
-  auto cphd_f = std::make_unique<phd::GmCphdFilter<double>>();
-  phd::FilterParams<double> p = phdtest::seed001_params();
+  auto phd_f = std::make_unique<GmPhdFilter<double>>();
+  auto cphd_f = std::make_unique<GmCphdFilter<double>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
   REQUIRE(phd_f->init(p) == Status::kOk);
   REQUIRE(cphd_f->init(p) == Status::kOk);
   auto scan = std::make_unique<ScanD>();
@@ -136,10 +136,10 @@ TEST_CASE("PHD and CPHD step() do not allocate") {
 }
 
 TEST_CASE("bad params, out-of-order scans and invalid measurements are statuses") {
-  auto f = std::make_unique<phd::GmPhdFilter<double>>();
+  auto f = std::make_unique<GmPhdFilter<double>>();
   auto scan = std::make_unique<ScanD>();
   CHECK(f->step(*scan) == Status::kNotInitialized);
-  phd::FilterParams<double> p = phdtest::seed001_params();
+  RfsFilterParams<double> p = phdtest::seed001_params();
   p.survival_prob = 1.5;
   CHECK(f->init(p) == Status::kInvalidArgument);
   p = phdtest::seed001_params();

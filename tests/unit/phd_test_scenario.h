@@ -12,7 +12,7 @@
 #include "mptrack/caps.h"
 #include "mptrack/math/detmath.h"
 #include "mptrack/measurement.h"
-#include "mptrack/phd/phd_params.h"
+#include "mptrack/rfs/rfs_params.h"
 
 namespace phdtest {
 
@@ -74,9 +74,9 @@ void make_scan(mptrack::Scan<double, N>& scan, int k, const Truth* truths, int n
 }
 
 /// Seed 001 filter parameters for this scenario.
-inline mptrack::phd::FilterParams<double> seed001_params() {
-  mptrack::phd::FilterParams<double> p;
-  p.threshold = kThreshold;
+inline mptrack::RfsFilterParams<double> seed001_params() {
+  mptrack::RfsFilterParams<double> p;
+  p.amplitude.threshold = kThreshold;
   p.clutter_rate = 40.0;
   p.clutter_scale = 1.0;
   return p;

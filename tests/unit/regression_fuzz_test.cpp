@@ -110,11 +110,11 @@ TEST_CASE("F8: GM-CPHD (known uniform clutter) keeps finite weights across a 23.
   // nothing in float. Fix: ln R'_z capped at 200 (phd_filter.h,
   // cphd_factors). The amplitude ceiling (F4) would reject 1e6 by default,
   // so it is raised here to reach the cause.
-  using Filter = mptrack::phd::GmCphdFilter<float, FuzzIggmCaps>;
+  using Filter = mptrack::GmCphdFilter<float, FuzzIggmCaps>;
   auto f = std::make_unique<Filter>();
-  mptrack::phd::FilterParams<float> p;
-  p.clutter_mode = mptrack::phd::ClutterMode::kKnownUniform;
-  p.max_amplitude = 1e6f;
+  mptrack::RfsFilterParams<float> p;
+  p.clutter_mode = mptrack::ClutterMode::kKnownUniform;
+  p.amplitude.max_amplitude = 1e6f;
   REQUIRE(f->init(p) == Status::kOk);
   Filter::ScanType s;
   s.time_us = 1000076000u;
@@ -151,10 +151,10 @@ TEST_CASE("F4: a finite but huge amplitude (3.4e38) is rejected and leaves the c
   // the clutter map shows the same (crash-b0164cfb, amplitude 2.96e27).
   // Suggested fix: an amplitude ceiling in MeasurementBatch::load
   // (counted in measurements_invalid).
-  using Filter = mptrack::phd::GmCphdFilter<float, FuzzIggmCaps>;
+  using Filter = mptrack::GmCphdFilter<float, FuzzIggmCaps>;
   auto f = std::make_unique<Filter>();
-  mptrack::phd::FilterParams<float> p;
-  p.clutter_mode = mptrack::phd::ClutterMode::kEstimatedUniform;
+  mptrack::RfsFilterParams<float> p;
+  p.clutter_mode = mptrack::ClutterMode::kEstimatedUniform;
   REQUIRE(f->init(p) == Status::kOk);
   Filter::ScanType s;
   s.time_us = 1000005000u;
@@ -170,28 +170,28 @@ TEST_CASE("F4: a finite but huge amplitude (3.4e38) is rejected and leaves the c
 
 TEST_CASE("F5/F9: MF-BP init rejects params whose clutter seed grid or threshold overflow") {
   // Fuzz (fuzz_params, crash-02d87a06 and crash-0f9926f4): validate()
-  // accepts any finite positive r_max_m / clutter_cell_range_m /
+  // accepted any finite positive region.range_max_m / clutter_cell_range_m /
   // clutter_seed_factor and a region of ~zero volume, and spawn_components()
   // then casts span / cell = 1.7e35 (mfbp_tracker.h:1090) or an Inf seed
   // threshold (mfbp_tracker.h:1107) to size_t: undefined behaviour.
   mptrack::MfbpParams<float> p;
   p.clutter_cell_range_m = 1e-30f;
-  CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
+  CHECK(p.validate() == Status::kInvalidArgument);
   p = mptrack::MfbpParams<float>{};
   p.clutter_seed_factor = 3e38f;
-  CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
+  CHECK(p.validate() == Status::kInvalidArgument);
   p = mptrack::MfbpParams<float>{};
-  p.az_min_rad = 0.0f;  // crash-0f9926f4: a region of ~zero volume
-  p.az_max_rad = 1e-40f;
-  CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
+  p.region.azimuth_min_rad = 0.0f;  // crash-0f9926f4: a region of ~zero volume
+  p.region.azimuth_max_rad = 1e-40f;
+  CHECK(p.validate() == Status::kInvalidArgument);
   // F12 follow-ups (seeds f12-mfbp-*): the uniform clutter count became NaN
   p = mptrack::MfbpParams<float>{};
   p.dirichlet_kappa = 3.4e38f;
-  CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
+  CHECK(p.validate() == Status::kInvalidArgument);
   p = mptrack::MfbpParams<float>{};
   p.uniform_rate_per_scan = 2.4e-41f;
-  CHECK(mptrack::validate(p, 7) == Status::kInvalidArgument);
-  CHECK(mptrack::validate(mptrack::MfbpParams<float>{}, 7) == Status::kOk);  // defaults pass
+  CHECK(p.validate() == Status::kInvalidArgument);
+  CHECK(mptrack::MfbpParams<float>{}.validate() == Status::kOk);  // defaults pass
 }
 
 TEST_CASE("F2: a float cube with samples beyond max_abs_sample is refused and counted") {
@@ -291,10 +291,10 @@ TEST_CASE("F12: GnnParams rejects standard deviations whose square overflows flo
   p.init_velocity_std_mps = 3.4e38f;
   CHECK(p.validate() == Status::kInvalidArgument);
   p = mptrack::GnnParams<float>{};
-  p.sigma_range_m = 1e-40f;  // seed f12-*: a singular position covariance
+  p.noise.range_std_m = 1e-40f;  // seed f12-*: a singular position covariance
   CHECK(p.validate() == Status::kInvalidArgument);
   p = mptrack::GnnParams<float>{};
-  p.max_range_m = 3.4e38f;  // (r sigma_az)^2 overflows
+  p.region.range_max_m = 3.4e38f;  // (r sigma_az)^2 overflows
   CHECK(p.validate() == Status::kInvalidArgument);
   p = mptrack::GnnParams<float>{};
   p.init_velocity_std_mps = 1e-40f;  // seed f12-gnn-init-velocity-std-denormal: variance 0
@@ -322,51 +322,51 @@ TEST_CASE("F12: a GNN track born near range 0 has a positive definite covariance
   CHECK(P(0, 0) == doctest::Approx(0.04f));
 }
 
-TEST_CASE("F12: FilterParams rejects a polar azimuth std whose derived clutter count overflows") {
-  // Fuzz (fuzz_params, seed f13-*): CPHD, polar sigma_az_rad = 5.5e11.
-  mptrack::phd::FilterParams<float> p;
-  p.space = mptrack::phd::MeasurementSpace::kPolar;
-  p.region_min0 = 10.0f;
-  p.region_max0 = 1000.0f;
-  p.region_min1 = -1.0f;
-  p.region_max1 = 1.0f;
+TEST_CASE("F12: RfsFilterParams rejects a polar azimuth std whose derived clutter count overflows") {
+  // Fuzz (fuzz_params, seed f13-*): CPHD, polar noise.azimuth_std_rad = 5.5e11.
+  mptrack::RfsFilterParams<float> p;
+  p.space = mptrack::MeasurementSpace::kPolar;
+  p.region.range_min_m = 10.0f;
+  p.region.range_max_m = 1000.0f;
+  p.region.azimuth_min_rad = -1.0f;
+  p.region.azimuth_max_rad = 1.0f;
   REQUIRE(p.validate() == Status::kOk);
-  p.sigma_az_rad = 5.5e11f;
+  p.noise.azimuth_std_rad = 5.5e11f;
   CHECK(p.validate() == Status::kInvalidArgument);
-  p.sigma_az_rad = 0.0104720f;
-  p.sigma_r_m = 1e-40f;
+  p.noise.azimuth_std_rad = 0.0104720f;
+  p.noise.range_std_m = 1e-40f;
   CHECK(p.validate() == Status::kInvalidArgument);
-  p.sigma_r_m = 10.0f;
+  p.noise.range_std_m = 10.0f;
   p.birth_velocity_std_mps = 3.4e38f;
   CHECK(p.validate() == Status::kInvalidArgument);
 }
 
-TEST_CASE("F10: FilterParams rejects a region whose volume overflows, and a negative polar range") {
-  // Fuzz (fuzz_params): polar space with the default region_min0 = -1000
-  // and region_max0 = 3.4e38 was accepted; the region volume overflowed
+TEST_CASE("F10: RfsFilterParams rejects a region whose volume overflows, and a negative polar range") {
+  // Fuzz (fuzz_params): polar space with the then default range bound
+  // -1000 and a range maximum of 3.4e38 was accepted; the region volume overflowed
   // and the clutter intensity and expected_count became NaN.
-  mptrack::phd::FilterParams<float> p;
-  p.space = mptrack::phd::MeasurementSpace::kPolar;
-  p.region_min1 = -1.0f;
-  p.region_max1 = 1.0f;
-  p.region_min0 = 0.0f;
-  p.region_max0 = 1000.0f;
+  mptrack::RfsFilterParams<float> p;
+  p.space = mptrack::MeasurementSpace::kPolar;
+  p.region.azimuth_min_rad = -1.0f;
+  p.region.azimuth_max_rad = 1.0f;
+  p.region.range_min_m = 0.0f;
+  p.region.range_max_m = 1000.0f;
   REQUIRE(p.validate() == Status::kOk);
-  p.region_min0 = -1000.0f;  // a negative range bound
+  p.region.range_min_m = -1000.0f;  // a negative range bound
   CHECK(p.validate() == Status::kInvalidArgument);
-  p.region_min0 = 0.0f;
-  p.region_max0 = 3.4e38f;  // volume 6.8e38 = +Inf in float
+  p.region.range_min_m = 0.0f;
+  p.region.range_max_m = 3.4e38f;  // volume 6.8e38 = +Inf in float
   CHECK(p.validate() == Status::kInvalidArgument);
-  p.region_max0 = 1000.0f;
-  p.region_max1 = -1.0f + 1e-12f;  // rounds to -1: empty region
+  p.region.range_max_m = 1000.0f;
+  p.region.azimuth_max_rad = -1.0f + 1e-12f;  // rounds to -1: empty region
   CHECK(p.validate() == Status::kInvalidArgument);
   // Cartesian: both axes in metres, a huge but finite volume is refused too
-  mptrack::phd::FilterParams<float> c;
+  mptrack::RfsFilterParams<float> c;
   REQUIRE(c.validate() == Status::kOk);
-  c.region_min0 = -2e19f;
-  c.region_max0 = 2e19f;
-  c.region_min1 = -2e19f;
-  c.region_max1 = 2e19f;
+  c.cartesian_region.x_min_m = -2e19f;
+  c.cartesian_region.x_max_m = 2e19f;
+  c.cartesian_region.y_min_m = -2e19f;
+  c.cartesian_region.y_max_m = 2e19f;
   CHECK(c.validate() == Status::kInvalidArgument);
 }
 
@@ -404,7 +404,7 @@ TEST_CASE("F13: MF-BP tracks born from scans 1 ms apart keep an SPD covariance")
       mptrack::MfbpParams<float> p;
       p.window_length = window;
       p.slide = window == 7 ? 3 : 1;
-      p.use_amplitude = amplitude;
+      p.amplitude.use_amplitude = amplitude;
       REQUIRE(trk->init(p) == Status::kOk);
       std::size_t reports = 0;
       auto check_outputs = [&]() {
@@ -453,7 +453,7 @@ TEST_CASE("F14: MF-BP covariance stays SPD after a 28 s gap and a 4 km jump") {
   mptrack::MfbpParams<float> p;
   p.window_length = 1;
   p.slide = 1;
-  p.use_amplitude = false;
+  p.amplitude.use_amplitude = false;
   p.clutter_mode = mptrack::ClutterMode::kUniformKnownRate;
   p.bp_max_iterations = 50;
   REQUIRE(trk->init(p) == Status::kOk);

@@ -11,6 +11,7 @@
 #include "eval/scan_evaluator.h"
 #include "mptrack/scenario/builtin.h"
 #include "runner.h"
+#include "tracker_registry.h"
 #include "writers.h"
 
 using namespace mptrack::sim;
@@ -215,4 +216,24 @@ TEST_CASE("sim pipeline: an unknown tracker is a clear error") {
     msg = e.what();
   }
   CHECK(msg == "unknown tracker 'kalman9000'");
+}
+
+TEST_CASE("sim tracker init: a refused parameter is named with the rule it broke") {
+  // DefaultCaps::kMaxWindow = 7: window 100 is refused by MfbpTracker::validate.
+  std::string error;
+  auto trk = make_tracker("mfbp", error);
+  REQUIRE(trk != nullptr);
+  TrackerSetup setup;
+  REQUIRE(sc::builtin_scenario("seed000-s1", setup.spec));
+  setup.mfbp_params = {"window_length=100"};
+  CHECK(trk->init(setup) ==
+        "invalid tracker parameter window_length: needs check(p.window_length <= kMaxWindow)");
+  setup.mfbp_params = {"noise.range_std_m=-1"};
+  CHECK(trk->init(setup).rfind("invalid tracker parameter noise.range_std_m: needs ", 0) == 0);
+  setup.mfbp_params = {"amplitude.use_amplitude=2"};
+  CHECK(trk->init(setup) == "--mfbp-param amplitude.use_amplitude: expected 0 or 1, got '2'");
+  setup.mfbp_params = {"process_noise_var=0.1"};  // the old name
+  CHECK(trk->init(setup) == "--mfbp-param: unknown parameter 'process_noise_var' (see host-sim/README.md)");
+  setup.mfbp_params = {};
+  CHECK(trk->init(setup).empty());
 }

@@ -119,7 +119,7 @@ struct TrackerRun {
 
 using Mfbp = mptrack::MfbpTracker<float, mptrack::DefaultCaps>;
 using Gnn = mptrack::GnnTracker<float, mptrack::DefaultCaps>;
-using Phd = mptrack::phd::GmPhdFilter<float, mptrack::DefaultCaps>;
+using Phd = mptrack::GmPhdFilter<float, mptrack::DefaultCaps>;
 using FeCaps = mptrack::frontend::Seed004RadarCaps;
 
 std::size_t mfbp_stack(std::size_t window, std::size_t slide) {
@@ -211,7 +211,7 @@ TEST_CASE("stack: GNN step() stays within its budget") {
 
 TEST_CASE("stack: GM-PHD step() stays within its budget") {
   TrackerRun<Phd> run;
-  mptrack::phd::FilterParams<float> p;
+  mptrack::RfsFilterParams<float> p;
   p.clutter_rate = static_cast<float>(kClutter);
   REQUIRE(run.tracker->init(p) == Status::kOk);
   run.make_scans();

@@ -89,11 +89,11 @@ struct IggmCase {
     typename Tracker::Params p;
     // Polar measurement space, so both range and azimuth have bounds (in
     // the Cartesian default the region is an x/y box: any azimuth is inside).
-    p.space = mptrack::phd::MeasurementSpace::kPolar;
-    p.region_min0 = 10.0f;
-    p.region_max0 = 1000.0f;
-    p.region_min1 = -1.0f;
-    p.region_max1 = 1.0f;
+    p.space = mptrack::MeasurementSpace::kPolar;
+    p.region.range_min_m = 10.0f;
+    p.region.range_max_m = 1000.0f;
+    p.region.azimuth_min_rad = -1.0f;
+    p.region.azimuth_max_rad = 1.0f;
     return p;
   }
   static mptrack::Measurement<float> target() { return meas(300.0f, 0.5f, 8.0f); }
@@ -108,9 +108,9 @@ struct IggmCase {
 constexpr char kPhdName[] = "gmphd";
 constexpr char kCphdName[] = "gmcphd";
 constexpr char kCbmName[] = "cbmember";
-using PhdCase = IggmCase<mptrack::phd::GmPhdFilter<float, mptrack::SmallBoardCaps>, kPhdName>;
-using CphdCase = IggmCase<mptrack::phd::GmCphdFilter<float, mptrack::SmallBoardCaps>, kCphdName>;
-using CbmCase = IggmCase<mptrack::cbmember::CbMemberFilter<float, mptrack::SmallBoardCaps>, kCbmName>;
+using PhdCase = IggmCase<mptrack::GmPhdFilter<float, mptrack::SmallBoardCaps>, kPhdName>;
+using CphdCase = IggmCase<mptrack::GmCphdFilter<float, mptrack::SmallBoardCaps>, kCphdName>;
+using CbmCase = IggmCase<mptrack::CbMemberFilter<float, mptrack::SmallBoardCaps>, kCbmName>;
 
 template <class Estimate>
 bool identical(const Estimate& a, const Estimate& b) {

@@ -8,7 +8,7 @@ namespace mptrack::sim {
 
 const char* const kMfbpParamHelp =
     "override an MfbpParams field for the MF-BP trackers, NAME=VALUE (repeatable), e.g. "
-    "process_noise_var=0.3 or unresolved_chi2=0; names in host-sim/README.md";
+    "accel_var_m2ps4=0.3, amplitude.use_amplitude=0 or unresolved_chi2=0; names in host-sim/README.md";
 
 double parse_ratio(const std::string& text, const char* flag) {
   const auto slash = text.find('/');

@@ -5,12 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <utility>
 
 #include "mptrack/adc/frontend_config.h"
 #include "mptrack/frontend/front_end.h"
 #include "mptrack/math/detmath.h"
+#include "mptrack/validate.h"
 #include "stream/adc_trackers.h"
 
 namespace mptrack::sim {
@@ -111,7 +113,12 @@ void AdcScanSource::begin_run(std::uint32_t run) {
 }
 
 void AdcScanSource::deliver(const ScanStep& step) {
-  if (fe_->fe.init(adc::frontend_params_for(sc_)) != Status::kOk) throw std::runtime_error("front end init failed");
+  const frontend::FrontEndParams fp = adc::frontend_params_for(sc_);
+  ParamError where;
+  if (frontend::FrontEnd<adc::AdcCaps>::validate(fp, &where) != Status::kOk) {
+    throw std::runtime_error(std::string("invalid front-end parameter ") + where.field + ": needs " + where.rule);
+  }
+  if (fe_->fe.init(fp) != Status::kOk) throw std::runtime_error("front end init failed");
   scans_ = truth_scans_;
   records_.assign(sc_.num_frames, FrameRecord{});
   auto ring = std::make_unique<StreamRing>();  // fresh counters per delivery

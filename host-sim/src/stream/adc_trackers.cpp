@@ -76,10 +76,7 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
   std::string init(const TrackerSetup& setup) override {
     const scenario::ScenarioSpec& s = setup.spec;
     MfbpParams<double> p = seed000_default_params<double>();
-    p.r_min_m = s.region.range_min_m;
-    p.r_max_m = s.region.range_max_m;
-    p.az_min_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
-    p.az_max_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+    p.region = scenario_region(s);
     p.scan_period_s = s.scan_period_s;
     // Tuned on seed004-drones, 20 runs (docs/results/seed004.md). The limit
     // is the front end, not the SNR model: drones 1 and 2 share a range /
@@ -90,19 +87,19 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     // - measurement noise inflated over the measured RMS (0.77 m, 1.75 deg,
     //   taken only over detections within 3 m) to 2 m / 4 deg, so merged
     //   detections still update the tracks instead of spawning new ones;
-    p.sigma_r_m = 2.0;
-    p.sigma_az_rad = scenario::deg_to_rad(4.0);
-    p.amplitude_threshold = s.threshold;
-    p.swerling = 3;                   // seed 004 Sec. V-A: Swerling 3 drones
+    p.noise.range_std_m = 2.0;
+    p.noise.azimuth_std_rad = scenario::deg_to_rad(4.0);
+    p.amplitude.threshold = s.threshold;
+    p.amplitude.swerling = 3;                   // seed 004 Sec. V-A: Swerling 3 drones
     // - kinematics-only association with a fixed Pd = 0.4 (front end: a
     //   drone within 3 m in ~0.5 of drone-frames). The amplitude model
     //   predicts Pd ~ 0.95 from a drone's 15 dB SNR and therefore reads the
     //   resolution misses as evidence that the track is gone (at sigma 1 m:
     //   6.5 m with the amplitude, 6.1 / 5.5 / 5.3 / 5.0 m without at Pd 0.8 /
     //   0.6 / 0.5 / 0.4; Pd 0.3 is worse again);
-    p.use_amplitude = false;
+    p.amplitude.use_amplitude = false;
     p.pd_no_amplitude = 0.4;
-    p.process_noise_var = 9.0;        // (3 m/s^2)^2: track 3 turns at ~8.5 m/s^2; 3..20 flat
+    p.accel_var_m2ps4 = 9.0;          // (3 m/s^2)^2: track 3 turns at ~8.5 m/s^2; 3..20 flat
                                       // (docs/algorithms/scenarios.md §Seed 004)
     p.v_max_x_mps = 12.0;             // drones fly at 7 m/s (docs/algorithms/scenarios.md §Seed 004)
     p.v_max_y_mps = 12.0;
@@ -145,12 +142,8 @@ class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, Default
   std::string init(const TrackerSetup& setup) override {
     const scenario::ScenarioSpec& s = setup.spec;
     GnnParams<double> p;  // defaults: seed 004 Sec. V-A; docs/algorithms/gnn.md
-    p.sigma_range_m = s.sigma_range_m;
-    p.sigma_azimuth_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
-    p.min_range_m = s.region.range_min_m;
-    p.max_range_m = s.region.range_max_m;
-    p.min_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
-    p.max_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
+    set_scenario_noise(s, p.noise);
+    p.region = scenario_region(s);
     return init_tracker(p);
   }
 };

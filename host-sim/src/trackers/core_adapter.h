@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "mptrack/scenario/generator.h"
+#include "mptrack/tracker_params.h"
+#include "mptrack/validate.h"
 #include "tracker_adapter.h"
 
 namespace mptrack::sim {
@@ -46,7 +48,13 @@ class CoreTrackerAdapter : public TrackerAdapter {
   /// Hook run before each step (e.g. the known clutter map of mfbp-kce).
   virtual void before_step(std::uint32_t /*scan*/) {}
 
+  /// Initialises the tracker; on refusal the message names the field and
+  /// the rule it broke (Tracker::validate, tracker_contract.h).
   std::string init_tracker(const Params& params) {
+    ParamError where;
+    if (Tracker::validate(params, &where) != Status::kOk) {
+      return std::string("invalid tracker parameter ") + where.field + ": needs " + where.rule;
+    }
     const Status st = tracker_->init(params);
     return st == Status::kOk ? std::string() : std::string("init failed: ") + to_string(st);
   }
@@ -62,6 +70,18 @@ class CoreTrackerAdapter : public TrackerAdapter {
   std::unique_ptr<typename Tracker::ScanType> scan_;
   std::uint64_t truncated_ = 0;
 };
+
+/// The scenario's polar surveillance region in the trackers' units.
+inline PolarRegion<double> scenario_region(const scenario::ScenarioSpec& s) {
+  return {s.region.range_min_m, s.region.range_max_m, scenario::deg_to_rad(s.region.azimuth_min_deg),
+          scenario::deg_to_rad(s.region.azimuth_max_deg)};
+}
+
+/// The scenario's range and azimuth noise; the Doppler std stays the tracker's.
+inline void set_scenario_noise(const scenario::ScenarioSpec& s, PolarNoise<double>& n) {
+  n.range_std_m = s.sigma_range_m;
+  n.azimuth_std_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
+}
 
 /// The Swerling case the tracker assumes: the first target's (1 if none).
 inline int scenario_swerling(const scenario::ScenarioSpec& spec) {

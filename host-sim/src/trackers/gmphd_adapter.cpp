@@ -35,21 +35,17 @@ double uniform_cnr(const scenario::ScenarioSpec& spec) {
 }
 
 /// Filter params for a seed 000 (polar) scenario; see the file comment.
-phd::FilterParams<double> params_for(const TrackerSetup& setup, const std::string& variant) {
+RfsFilterParams<double> params_for(const TrackerSetup& setup, const std::string& variant) {
   const scenario::ScenarioSpec& s = setup.spec;
-  phd::FilterParams<double> p;
-  p.space = phd::MeasurementSpace::kPolar;
-  p.sigma_r_m = s.sigma_range_m;
-  p.sigma_az_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
-  p.region_min0 = s.region.range_min_m;
-  p.region_max0 = s.region.range_max_m;
-  p.region_min1 = scenario::deg_to_rad(s.region.azimuth_min_deg);
-  p.region_max1 = scenario::deg_to_rad(s.region.azimuth_max_deg);
+  RfsFilterParams<double> p;
+  p.space = MeasurementSpace::kPolar;
+  set_scenario_noise(s, p.noise);
+  p.region = scenario_region(s);
   p.scan_period_s = s.scan_period_s;
-  p.accel_std_mps2 = 1.0;            // seed 000 maneuvers reach 0.33 m/s^2 (as the gnn adapter)
+  p.accel_var_m2ps4 = 1.0;  // (1 m/s^2)^2: seed 000 maneuvers reach 0.33 m/s^2 (as the gnn adapter)
   p.birth_velocity_std_mps = 60.0;   // v_max 120 m/s / 2 (seed 000 Sec. IV-A)
-  p.threshold = s.threshold;
-  p.swerling_order = scenario_swerling(s) == 3 ? 2 : 1;
+  p.amplitude.threshold = s.threshold;
+  p.amplitude.swerling = scenario_swerling(s);
   double snr = 0.0;
   for (const auto& t : s.targets) snr += t.snr;
   p.target_power_prior = 1.0 + (s.targets.empty() ? 10.0 : snr / static_cast<double>(s.targets.size()));
@@ -59,10 +55,10 @@ phd::FilterParams<double> params_for(const TrackerSetup& setup, const std::strin
   p.clutter_scale = 1.0 + uniform_cnr(s);  // Rayleigh: sigma0 = total clutter power
   p.hotspot_half_width0 = 500.0;                         // [m]
   p.hotspot_half_width1 = scenario::deg_to_rad(2.0);     // [rad]
-  p.clutter_mode = phd::ClutterMode::kEstimatedMap;
-  if (variant == "uniform") p.clutter_mode = phd::ClutterMode::kEstimatedUniform;
-  if (variant == "known") p.clutter_mode = phd::ClutterMode::kKnownUniform;
-  if (variant == "ki") p.use_amplitude = false;
+  p.clutter_mode = ClutterMode::kEstimatedMap;
+  if (variant == "uniform") p.clutter_mode = ClutterMode::kEstimatedUniform;
+  if (variant == "known") p.clutter_mode = ClutterMode::kKnownUniform;
+  if (variant == "ki") p.amplitude.use_amplitude = false;
   return p;
 }
 
@@ -71,18 +67,18 @@ phd::FilterParams<double> params_for(const TrackerSetup& setup, const std::strin
 /// scenario's threshold, Swerling case and clutter amplitude law (b, sigma0),
 /// and as the known / prior clutter rate the scenario's total mean count
 /// spread uniformly (the fixed model knows the rate, never the hot spots).
-phd::FilterParams<double> cartesian_params_for(const TrackerSetup& setup, const std::string& variant) {
+RfsFilterParams<double> cartesian_params_for(const TrackerSetup& setup, const std::string& variant) {
   const scenario::ScenarioSpec& s = setup.spec;
-  phd::FilterParams<double> p;
-  p.space = phd::MeasurementSpace::kCartesian;
-  p.sigma_r_m = s.sigma_xy_m;
-  p.region_min0 = s.xy_region.x_min_m;
-  p.region_max0 = s.xy_region.x_max_m;
-  p.region_min1 = s.xy_region.y_min_m;
-  p.region_max1 = s.xy_region.y_max_m;
+  RfsFilterParams<double> p;
+  p.space = MeasurementSpace::kCartesian;
+  p.cartesian_std_m = s.sigma_xy_m;
+  p.cartesian_region.x_min_m = s.xy_region.x_min_m;
+  p.cartesian_region.x_max_m = s.xy_region.x_max_m;
+  p.cartesian_region.y_min_m = s.xy_region.y_min_m;
+  p.cartesian_region.y_max_m = s.xy_region.y_max_m;
   p.scan_period_s = s.scan_period_s;
-  p.threshold = s.threshold;
-  p.swerling_order = scenario_swerling(s) == 3 ? 2 : 1;
+  p.amplitude.threshold = s.threshold;
+  p.amplitude.swerling = scenario_swerling(s);
   double snr = 0.0;
   for (const auto& t : s.targets) snr += t.snr;
   const double mean_snr = s.targets.empty() ? 100.0 : snr / static_cast<double>(s.targets.size());
@@ -104,10 +100,10 @@ phd::FilterParams<double> cartesian_params_for(const TrackerSetup& setup, const 
     }
     break;
   }
-  p.clutter_mode = phd::ClutterMode::kEstimatedMap;
-  if (variant == "uniform") p.clutter_mode = phd::ClutterMode::kEstimatedUniform;
-  if (variant == "known") p.clutter_mode = phd::ClutterMode::kKnownUniform;
-  if (variant == "ki") p.use_amplitude = false;
+  p.clutter_mode = ClutterMode::kEstimatedMap;
+  if (variant == "uniform") p.clutter_mode = ClutterMode::kEstimatedUniform;
+  if (variant == "known") p.clutter_mode = ClutterMode::kKnownUniform;
+  if (variant == "ki") p.amplitude.use_amplitude = false;
   return p;
 }
 
@@ -135,9 +131,9 @@ std::unique_ptr<TrackerAdapter> make_iggm_tracker(const std::string& name) {
   const auto dash = name.find('-');
   const std::string base = name.substr(0, dash);
   const std::string variant = dash == std::string::npos ? std::string() : name.substr(dash + 1);
-  if (base == "gmphd") return std::make_unique<IggmAdapter<phd::GmPhdFilter<double>>>(variant);
-  if (base == "gmcphd") return std::make_unique<IggmAdapter<phd::GmCphdFilter<double>>>(variant);
-  if (base == "cbmember") return std::make_unique<IggmAdapter<cbmember::CbMemberFilter<double>>>(variant);
+  if (base == "gmphd") return std::make_unique<IggmAdapter<GmPhdFilter<double>>>(variant);
+  if (base == "gmcphd") return std::make_unique<IggmAdapter<GmCphdFilter<double>>>(variant);
+  if (base == "cbmember") return std::make_unique<IggmAdapter<CbMemberFilter<double>>>(variant);
   return nullptr;
 }
 

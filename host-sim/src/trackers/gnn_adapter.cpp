@@ -17,13 +17,9 @@ class GnnAdapter final : public CoreTrackerAdapter<Tracker> {
   std::string init(const TrackerSetup& setup) override {
     const scenario::ScenarioSpec& s = setup.spec;
     GnnParams<double> p;
-    p.sigma_range_m = s.sigma_range_m;
-    p.sigma_azimuth_rad = scenario::deg_to_rad(s.sigma_azimuth_deg);
-    p.min_range_m = s.region.range_min_m;
-    p.max_range_m = s.region.range_max_m;
-    p.min_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_min_deg);
-    p.max_azimuth_rad = scenario::deg_to_rad(s.region.azimuth_max_deg);
-    p.accel_std_mps2 = 1.0;           // seed 000 maneuvers reach 0.33 m/s^2
+    set_scenario_noise(s, p.noise);
+    p.region = scenario_region(s);
+    p.accel_var_m2ps4 = 1.0;          // (1 m/s^2)^2: seed 000 maneuvers reach 0.33 m/s^2
     p.init_velocity_std_mps = 60.0;   // v_max = 120 m/s (seed 000 Sec. IV-A) / 2
     return init_tracker(p);
   }

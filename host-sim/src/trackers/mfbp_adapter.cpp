@@ -40,22 +40,18 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
     spec_ = setup.spec;
     scale_ = setup.clutter_scale;
     MfbpParams<double> p = seed000_default_params<double>();
-    p.r_min_m = spec_.region.range_min_m;
-    p.r_max_m = spec_.region.range_max_m;
-    p.az_min_rad = scenario::deg_to_rad(spec_.region.azimuth_min_deg);
-    p.az_max_rad = scenario::deg_to_rad(spec_.region.azimuth_max_deg);
+    p.region = scenario_region(spec_);
     p.scan_period_s = spec_.scan_period_s;
-    p.sigma_r_m = spec_.sigma_range_m;
-    p.sigma_az_rad = scenario::deg_to_rad(spec_.sigma_azimuth_deg);
-    p.amplitude_threshold = spec_.threshold;
-    p.swerling = scenario_swerling(spec_);
+    set_scenario_noise(spec_, p.noise);
+    p.amplitude.threshold = spec_.threshold;
+    p.amplitude.swerling = scenario_swerling(spec_);
     p.uniform_rate_per_scan = uniform_rate(spec_, scale_);
     p.uniform_cnr_prior = uniform_cnr(spec_);
     if (variant_ == "mfbp-filter") {
       p.window_length = 1;
       p.slide = 1;
     } else if (variant_ == "mfbp-ki") {
-      p.use_amplitude = false;
+      p.amplitude.use_amplitude = false;
     } else if (variant_ == "mfbp-nce") {
       p.clutter_mode = ClutterMode::kUniformKnownRate;
     } else if (variant_ == "mfbp-kce") {

@@ -1,9 +1,68 @@
-// --mfbp-param NAME=VALUE overrides; see mfbp_param_override.h.
+// --mfbp-param NAME=VALUE overrides; see mfbp_param_override.h. NAME is the
+// field as written in MfbpParams, dotted for the shared blocks of
+// tracker_params.h ("noise.range_std_m", "amplitude.use_amplitude").
 #include "trackers/mfbp_param_override.h"
 
 #include <cstdlib>
 
 namespace mptrack::sim {
+
+namespace {
+
+using P = MfbpParams<double>;
+
+struct Real {
+  const char* name;
+  double& (*field)(P&);
+};
+struct Count {
+  const char* name;
+  std::size_t& (*field)(P&);
+};
+struct Flag {
+  const char* name;
+  bool& (*field)(P&);
+};
+
+// One line per field a user tunes most; units and defaults in mfbp_params.h.
+const Real kReals[] = {
+    {"accel_var_m2ps4", [](P& p) -> double& { return p.accel_var_m2ps4; }},
+    {"manoeuvre_noise_var_max", [](P& p) -> double& { return p.manoeuvre_noise_var_max; }},
+    {"manoeuvre_fading", [](P& p) -> double& { return p.manoeuvre_fading; }},
+    {"unresolved_chi2", [](P& p) -> double& { return p.unresolved_chi2; }},
+    {"gate_chi2", [](P& p) -> double& { return p.gate_chi2; }},
+    {"report_existence_min", [](P& p) -> double& { return p.report_existence_min; }},
+    {"p_survive", [](P& p) -> double& { return p.p_survive; }},
+    {"p_birth", [](P& p) -> double& { return p.p_birth; }},
+    {"confirm_threshold", [](P& p) -> double& { return p.confirm_threshold; }},
+    {"delete_threshold", [](P& p) -> double& { return p.delete_threshold; }},
+    {"pd_no_amplitude", [](P& p) -> double& { return p.pd_no_amplitude; }},
+    {"bp_damping", [](P& p) -> double& { return p.bp_damping; }},
+    {"birth_max_component_share", [](P& p) -> double& { return p.birth_max_component_share; }},
+    {"unexplained_threshold", [](P& p) -> double& { return p.unexplained_threshold; }},
+    {"noise.range_std_m", [](P& p) -> double& { return p.noise.range_std_m; }},
+    {"noise.azimuth_std_rad", [](P& p) -> double& { return p.noise.azimuth_std_rad; }},
+    {"noise.doppler_std_mps", [](P& p) -> double& { return p.noise.doppler_std_mps; }},
+    {"amplitude.threshold", [](P& p) -> double& { return p.amplitude.threshold; }},
+};
+const Count kCounts[] = {
+    {"delete_run", [](P& p) -> std::size_t& { return p.delete_run; }},
+    {"window_length", [](P& p) -> std::size_t& { return p.window_length; }},
+    {"slide", [](P& p) -> std::size_t& { return p.slide; }},
+    {"mp_max_iterations", [](P& p) -> std::size_t& { return p.mp_max_iterations; }},
+    {"bp_max_iterations", [](P& p) -> std::size_t& { return p.bp_max_iterations; }},
+    {"birth_max_per_window", [](P& p) -> std::size_t& { return p.birth_max_per_window; }},
+    {"tentative_timeout_scans", [](P& p) -> std::size_t& { return p.tentative_timeout_scans; }},
+};
+const Flag kFlags[] = {
+    {"unresolved_pooling", [](P& p) -> bool& { return p.unresolved_pooling; }},
+    {"association_cavity", [](P& p) -> bool& { return p.association_cavity; }},
+    {"late_birth", [](P& p) -> bool& { return p.late_birth; }},
+    {"amplitude.use_amplitude", [](P& p) -> bool& { return p.amplitude.use_amplitude; }},
+    {"use_doppler", [](P& p) -> bool& { return p.use_doppler; }},
+};
+
+}  // namespace
 
 std::string apply_mfbp_param(MfbpParams<double>& p, const std::string& kv) {
   const std::size_t eq = kv.find('=');
@@ -13,57 +72,22 @@ std::string apply_mfbp_param(MfbpParams<double>& p, const std::string& kv) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end == nullptr || *end != '\0') return "--mfbp-param " + name + ": '" + text + "' is not a number";
-  const auto count = [v]() { return v < 0.0 ? std::size_t{0} : static_cast<std::size_t>(v); };
-  struct Real { const char* name; double MfbpParams<double>::*field; };
-  static const Real kReals[] = {
-      {"process_noise_var", &MfbpParams<double>::process_noise_var},
-      {"manoeuvre_noise_var_max", &MfbpParams<double>::manoeuvre_noise_var_max},
-      {"manoeuvre_fading", &MfbpParams<double>::manoeuvre_fading},
-      {"unresolved_chi2", &MfbpParams<double>::unresolved_chi2},
-      {"gate_chi2", &MfbpParams<double>::gate_chi2},
-      {"report_existence_min", &MfbpParams<double>::report_existence_min},
-      {"p_survive", &MfbpParams<double>::p_survive},
-      {"p_birth", &MfbpParams<double>::p_birth},
-      {"confirm_threshold", &MfbpParams<double>::confirm_threshold},
-      {"delete_threshold", &MfbpParams<double>::delete_threshold},
-      {"pd_no_amplitude", &MfbpParams<double>::pd_no_amplitude},
-      {"bp_damping", &MfbpParams<double>::bp_damping},
-      {"birth_max_component_share", &MfbpParams<double>::birth_max_component_share},
-      {"unexplained_threshold", &MfbpParams<double>::unexplained_threshold},
-  };
   for (const Real& r : kReals) {
     if (name == r.name) {
-      p.*(r.field) = v;
+      r.field(p) = v;
       return "";
     }
   }
-  struct Count { const char* name; std::size_t MfbpParams<double>::*field; };
-  static const Count kCounts[] = {
-      {"delete_run", &MfbpParams<double>::delete_run},
-      {"window_length", &MfbpParams<double>::window_length},
-      {"slide", &MfbpParams<double>::slide},
-      {"mp_max_iterations", &MfbpParams<double>::mp_max_iterations},
-      {"bp_max_iterations", &MfbpParams<double>::bp_max_iterations},
-      {"birth_max_per_window", &MfbpParams<double>::birth_max_per_window},
-      {"tentative_timeout_scans", &MfbpParams<double>::tentative_timeout_scans},
-  };
   for (const Count& c : kCounts) {
     if (name == c.name) {
-      p.*(c.field) = count();
+      c.field(p) = v < 0.0 ? std::size_t{0} : static_cast<std::size_t>(v);
       return "";
     }
   }
-  struct Flag { const char* name; bool MfbpParams<double>::*field; };
-  static const Flag kFlags[] = {
-      {"unresolved_pooling", &MfbpParams<double>::unresolved_pooling},
-      {"association_cavity", &MfbpParams<double>::association_cavity},
-      {"late_birth", &MfbpParams<double>::late_birth},
-      {"use_amplitude", &MfbpParams<double>::use_amplitude},
-      {"use_doppler", &MfbpParams<double>::use_doppler},
-  };
   for (const Flag& f : kFlags) {
     if (name == f.name) {
-      p.*(f.field) = v != 0.0;
+      if (v != 0.0 && v != 1.0) return "--mfbp-param " + name + ": expected 0 or 1, got '" + text + "'";
+      f.field(p) = v != 0.0;
       return "";
     }
   }

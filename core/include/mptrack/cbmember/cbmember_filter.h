@@ -42,10 +42,7 @@
 #include "mptrack/track_report.h"
 #include "mptrack/tracker_contract.h"
 
-namespace mptrack::cbmember {
-
-using rfs::FilterParams;
-using rfs::TargetComponent;
+namespace mptrack {
 
 template <class T, class Caps = DefaultCaps>
 class CbMemberFilter {
@@ -53,7 +50,7 @@ class CbMemberFilter {
 
  public:
   using Scalar = T;
-  using Params = FilterParams<T>;
+  using Params = RfsFilterParams<T>;
   using ScanType = Scan<T, Caps::kMaxMeasurements>;
   using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
   using OutputQueue = StaticVector<Estimate, 1>;
@@ -72,9 +69,18 @@ class CbMemberFilter {
     StaticVector<Component, kMaxComponentsPerTrack> comps;
   };
 
+  /// Checks p (RfsFilterParams::validate; no field depends on Caps); on
+  /// failure names the field in *where (validate.h).
+  static Status validate(const Params& p, ParamError* where = nullptr) { return p.validate(where); }
+
+  /// The params of the last successful init().
+  const Params& params() const { return params_; }
+
+  /// Validates p (validate() above) and resets everything.
   Status init(const Params& p) {
+    static_assert(tracker_contract_holds<CbMemberFilter>());  // tracker_contract.h
     initialized_ = false;
-    MPTRACK_TRY(p.validate());
+    MPTRACK_TRY(validate(p));
     params_ = p;
     model_ = p.measurement_model();
     gate_ = rfs::chi2_gate_2dof(p.gate_probability);
@@ -82,7 +88,7 @@ class CbMemberFilter {
     reduction_.prune_threshold = p.prune_threshold;
     reduction_.merge_threshold = p.merge_threshold;
     reduction_.merge_threshold_power = p.merge_threshold_power;
-    reduction_.use_power = p.use_amplitude;
+    reduction_.use_power = p.amplitude.use_amplitude;
     reduction_.max_alpha = p.max_alpha;
     tracks_.clear();
     births_.clear();
@@ -398,7 +404,7 @@ class CbMemberFilter {
       r.state = c.x;
       r.covariance = c.P;
       r.existence = t.r;
-      r.snr = params_.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
+      r.snr = params_.amplitude.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
       r.confirmed = true;
       r.measurement_index = c.measurement;
       if (e.tracks.push_back(r) != Status::kOk) break;
@@ -432,4 +438,4 @@ class CbMemberFilter {
   OutputQueue outputs_;
 };
 
-}  // namespace mptrack::cbmember
+}  // namespace mptrack

@@ -98,7 +98,7 @@ class Cfar {
   /// Validates p and solves alpha. kInvalidArgument on bad params.
   Status init(const CfarParams& p) {
     initialized_ = false;
-    MPTRACK_TRY(validate(p));
+    MPTRACK_TRY(p.validate());
     params_ = p;
     if (params_.os_rank == 0) {
       // Rohling's recommendation k ~ 3N/4, rounded half up.
@@ -140,9 +140,7 @@ class Cfar {
   }
 
   /// Minimum line length for this window: 2(G + T) + 1 cells.
-  std::size_t min_line_length() const {
-    return 2 * (params_.guard_cells + params_.training_cells) + 1;
-  }
+  std::size_t min_line_length() const { return params_.min_line_length(); }
 
   /// Tests cell i of line[0..len). len >= min_line_length() is the caller's
   /// precondition (FrontEnd::init checks it); otherwise the cell is untested.

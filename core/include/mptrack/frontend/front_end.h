@@ -82,30 +82,38 @@ class FrontEnd {
   static constexpr std::size_t kNa = Caps::kNumAngleBins;
   static constexpr std::size_t kNumRangeBins = Caps::kNumRangeBins;
 
-  /// Validates every parameter and builds all tables. On failure nothing
-  /// may be processed (process() returns kNotInitialized).
+  /// Checks every field (FrontEndParams::validate) and the fit to the
+  /// radar caps: max_detections, the chirp within the range FFT, the CFAR
+  /// window within a range line, a non-empty range gate. On failure names
+  /// the field in *where (validate.h).
+  static Status validate(const FrontEndParams& p, ParamError* where = nullptr) {
+    MPTRACK_TRY(p.validate(where));
+    MPTRACK_CHECK_PARAM(where, "max_detections", check(p.max_detections <= Caps::kMaxDetections));
+    const std::size_t len = chirp_samples(p);
+    MPTRACK_CHECK_PARAM(where, "chirp_duration_s",
+                        check(len >= 1 && len <= Caps::kNumSamples &&
+                              len + kNumRangeBins - 1 <= RangeMatchedFilter<Caps>::kM));
+    MPTRACK_CHECK_PARAM(where, "cfar.training_cells", check(p.cfar.min_line_length() <= kNumRangeBins));
+    std::size_t g_lo = 0;
+    std::size_t g_hi = 0;
+    range_gate(p, g_lo, g_hi);
+    MPTRACK_CHECK_PARAM(where, "max_range_m", check(g_hi > g_lo));
+    return Status::kOk;
+  }
+
+  /// Validates every parameter (validate() above) and builds all tables.
+  /// On failure nothing may be processed (process() returns kNotInitialized).
   Status init(const FrontEndParams& p) {
     initialized_ = false;
-    MPTRACK_TRY(check_positive(p.carrier_hz));
-    MPTRACK_TRY(check(p.max_detections >= 1 && p.max_detections <= Caps::kMaxDetections));
-    MPTRACK_TRY(check(is_finite(p.min_range_m) && is_finite(p.max_range_m) &&
-                      p.min_range_m >= 0.0 && p.max_range_m > p.min_range_m));
-    MPTRACK_TRY(check_range(p.min_noise_power, 0.0, 1e30));
-    MPTRACK_TRY(check_range(p.max_abs_sample, 1e-6, 1e9));
-    MPTRACK_TRY(check_range(p.saturation_fraction, 0.0, 1.0));
+    MPTRACK_TRY(validate(p));
     MPTRACK_TRY(rmf_.init(p));
     MPTRACK_TRY(dop_.init(p));
     MPTRACK_TRY(ang_.init(p));
     MPTRACK_TRY(cfar_.init(p.cfar));
-    MPTRACK_TRY(check(cfar_.min_line_length() <= kNumRangeBins));
-    const double bin_m = frontend::range_bin_m(p);
-    range_bin_m_ = bin_m;
-    // Gate: bins whose centre lies in [min_range_m, max_range_m].
+    range_bin_m_ = frontend::range_bin_m(p);
     std::size_t g_lo = 0;
-    while (g_lo < kNumRangeBins && static_cast<double>(g_lo) * bin_m < p.min_range_m) ++g_lo;
-    std::size_t g_hi = g_lo;
-    while (g_hi < kNumRangeBins && static_cast<double>(g_hi) * bin_m <= p.max_range_m) ++g_hi;
-    MPTRACK_TRY(check(g_hi > g_lo));
+    std::size_t g_hi = 0;
+    range_gate(p, g_lo, g_hi);
     gate_lo_ = g_lo;
     gate_hi_ = g_hi;
     max_detections_ = p.max_detections;
@@ -196,6 +204,14 @@ class FrontEnd {
   bool initialized() const { return initialized_; }
 
  private:
+  /// Range gate: bins [lo, hi) whose centre lies in [min_range_m, max_range_m].
+  static void range_gate(const FrontEndParams& p, std::size_t& lo, std::size_t& hi) {
+    const double bin_m = frontend::range_bin_m(p);
+    lo = 0;
+    while (lo < kNumRangeBins && static_cast<double>(lo) * bin_m < p.min_range_m) ++lo;
+    hi = lo;
+    while (hi < kNumRangeBins && static_cast<double>(hi) * bin_m <= p.max_range_m) ++hi;
+  }
   /// Sample tallies of one frame (check_frame).
   struct FrameCheck {
     std::size_t zero = 0;          ///< sample values exactly 0

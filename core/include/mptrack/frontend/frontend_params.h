@@ -1,12 +1,16 @@
-// Run-time tunables of the MIMO front end (developers' guide rule 4):
-// units and defaults in the comments, validated once by FrontEnd::init().
-// Defaults reproduce seed 004 (spec section 1.7, 32 MHz decimated path).
+// Run-time tunables of the MIMO front end (README.md §Conventions a
+// firmware engineer can rely on): units and defaults in the comments,
+// validated once by FrontEnd::init() (FrontEnd::validate(): these fields,
+// then the radar caps). Defaults reproduce seed 004
+// (docs/algorithms/frontend.md §Departures from the paper: the 32 MHz
+// decimated path).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
 #include "mptrack/frontend/window.h"
+#include "mptrack/math/constants.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
 
@@ -42,42 +46,48 @@ struct CfarParams {
   std::size_t training_cells = 8;            ///< training cells per side T [cells], 1..64
   double pfa = 1e-4;                         ///< false-alarm probability per tested cell, (0, 0.5]
   std::size_t os_rank = 0;                   ///< OS rank k in 1..2T; 0 = round(3/4 * 2T)
-};
 
-/// Validates CfarParams in isolation (line length checked by the user of it).
-inline Status validate(const CfarParams& p) {
-  MPTRACK_TRY(check(p.type == CfarType::kCellAveraging || p.type == CfarType::kGreatestOf ||
-                    p.type == CfarType::kSmallestOf || p.type == CfarType::kOrderedStatistic));
-  MPTRACK_TRY(check(p.edge == CfarEdge::kSkip || p.edge == CfarEdge::kShift ||
-                    p.edge == CfarEdge::kWrap));
-  MPTRACK_TRY(check(p.guard_cells <= 64));
-  MPTRACK_TRY(check(p.training_cells >= 1 && p.training_cells <= 64));
-  MPTRACK_TRY(check_range(p.pfa, 1e-300, 0.5));
-  MPTRACK_TRY(check(p.os_rank <= 2 * p.training_cells));
-  return Status::kOk;
-}
+  /// Cells a line needs for one full window: 2 (guard + training) + 1.
+  std::size_t min_line_length() const { return 2 * (guard_cells + training_cells) + 1; }
+
+  /// Validates CfarParams in isolation (line length checked by the user of
+  /// it); on failure names the field ("cfar.<name>") in *where.
+  Status validate(ParamError* where = nullptr) const {
+    MPTRACK_CHECK_PARAM(where, "cfar.type",
+                        check(type == CfarType::kCellAveraging || type == CfarType::kGreatestOf ||
+                              type == CfarType::kSmallestOf || type == CfarType::kOrderedStatistic));
+    MPTRACK_CHECK_PARAM(where, "cfar.edge",
+                        check(edge == CfarEdge::kSkip || edge == CfarEdge::kShift || edge == CfarEdge::kWrap));
+    MPTRACK_CHECK_PARAM(where, "cfar.guard_cells", check(guard_cells <= 64));
+    MPTRACK_CHECK_PARAM(where, "cfar.training_cells", check(training_cells >= 1 && training_cells <= 64));
+    MPTRACK_CHECK_PARAM(where, "cfar.pfa", check_range(pfa, 1e-300, 0.5));
+    MPTRACK_CHECK_PARAM(where, "cfar.os_rank", check(os_rank <= 2 * training_cells));
+    return Status::kOk;
+  }
+};
 
 /// Waveform, array and processing parameters.
 struct FrontEndParams {
-  // Waveform (spec 1.3, 1.7).
+  // Waveform (seed 004 Sec. V-A; docs/algorithms/frontend.md §Signal model).
   double carrier_hz = 10e9;            ///< carrier f_c [Hz]; lambda = c / f_c
   double bandwidth_hz = 20e6;          ///< chirp sweep BW [Hz] (-BW/2 .. +BW/2)
   double chirp_duration_s = 3.6e-6;    ///< chirp length T_Tx [s]
   double sample_rate_hz = 32e6;        ///< complex fast-time sample rate f_s [Hz]
   double chirp_repetition_s = 24e-6;   ///< same-Tx chirp interval T_c [s] (Doppler sampling;
                                        ///< TDM: N_T * slot, 3 * 8 us)
-  // Array (spec 1.2).
+  // Array (docs/algorithms/frontend.md §Frame input and checks).
   double element_spacing_wavelengths = 0.5;  ///< virtual ULA spacing d / lambda [-], (0, 1]
   // Processing.
   bool remove_dc = false;              ///< subtract each profile's complex mean before the MF
-                                       ///< (Tx->Rx leakage / DC offset, spec 2.1 step 1)
+                                       ///< (Tx->Rx leakage / DC offset,
+                                       ///< docs/algorithms/frontend.md §Range matched filter)
   WindowType range_window = WindowType::kRectangular;   ///< taper on the matched-filter reference
   WindowType doppler_window = WindowType::kHann;        ///< taper across chirps
   WindowType angle_window = WindowType::kRectangular;   ///< taper across virtual channels
   double max_abs_bearing_rad = 1.0471975511965976;      ///< angle grid span |theta| <= this [rad],
                                                         ///< (0, pi/2]; default 60 deg
   double min_range_m = 0.0;            ///< range gate lower end [m] (bins below not tested)
-  double max_range_m = 100.0;          ///< range gate upper end [m] (spec R_max)
+  double max_range_m = 100.0;          ///< range gate upper end [m] (seed 004 Sec. V-A: R_max)
   CfarParams cfar{};                   ///< detector along the range axis
   std::size_t max_detections = 64;     ///< per-frame cap (<= Caps::kMaxDetections; the Scan
                                        ///< capacity also caps it)
@@ -93,6 +103,32 @@ struct FrontEndParams {
   double saturation_fraction = 0.01;   ///< int16 cubes: a frame with more than this fraction of
                                        ///< its sample values at full scale (-32768 or 32767) is
                                        ///< flagged saturated (processed, kPartial) [-], in [0, 1]
+
+  /// Every field on its own; the fit to the radar caps (chirp length,
+  /// range gate, CFAR window, max_detections) is FrontEnd::validate()'s.
+  /// On failure names the field in *where (validate.h).
+  Status validate(ParamError* where = nullptr) const {
+    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_positive(carrier_hz));
+    MPTRACK_CHECK_PARAM(where, "bandwidth_hz", check_positive(bandwidth_hz));
+    MPTRACK_CHECK_PARAM(where, "chirp_duration_s", check_positive(chirp_duration_s));
+    MPTRACK_CHECK_PARAM(where, "sample_rate_hz", check_positive(sample_rate_hz));
+    MPTRACK_CHECK_PARAM(where, "chirp_repetition_s", check_positive(chirp_repetition_s));
+    MPTRACK_CHECK_PARAM(where, "element_spacing_wavelengths", check_range(element_spacing_wavelengths, 1e-3, 1.0));
+    MPTRACK_CHECK_PARAM(where, "range_window", check(is_valid_window(range_window)));
+    MPTRACK_CHECK_PARAM(where, "doppler_window", check(is_valid_window(doppler_window)));
+    MPTRACK_CHECK_PARAM(where, "angle_window", check(is_valid_window(angle_window)));
+    MPTRACK_CHECK_PARAM(where, "max_abs_bearing_rad",
+                        check_range(max_abs_bearing_rad, 1e-6, mptrack::dmath::kHalfPi<double>));
+    MPTRACK_CHECK_PARAM(where, "min_range_m", check(is_finite(min_range_m) && min_range_m >= 0.0));
+    MPTRACK_CHECK_PARAM(where, "max_range_m", check(is_finite(max_range_m) && max_range_m > min_range_m));
+    MPTRACK_TRY(cfar.validate(where));
+    MPTRACK_CHECK_PARAM(where, "max_detections", check(max_detections >= 1));
+    MPTRACK_CHECK_PARAM(where, "min_noise_power", check_range(min_noise_power, 0.0, 1e30));
+    MPTRACK_CHECK_PARAM(where, "angle_refine_iterations", check(angle_refine_iterations <= 64));
+    MPTRACK_CHECK_PARAM(where, "max_abs_sample", check_range(max_abs_sample, 1e-6, 1e9));
+    MPTRACK_CHECK_PARAM(where, "saturation_fraction", check_range(saturation_fraction, 0.0, 1.0));
+    return Status::kOk;
+  }
 };
 
 /// lambda [m].

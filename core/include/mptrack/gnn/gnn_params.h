@@ -1,13 +1,17 @@
 // Run-time parameters of the GNN + Kalman detect-then-track baseline
-// (seed 004 spec 2.5). Defaults are the spec's [R] values where it gives
-// them; units are in the names or the comments. validate() is what
-// GnnTracker::init() runs once; nothing is re-checked per scan.
+// (seed 004 Sec. V-A; docs/algorithms/gnn.md). Values the paper does not give
+// are ours (docs/algorithms/gnn.md §Departures from the paper); units are in
+// the names or the comments. The region and noise blocks and the motion
+// noise use the names shared by every tracker (tracker_params.h).
+// GnnTracker::validate() runs validate() and the caps checks once, in
+// init(); nothing is re-checked per scan.
 #pragma once
 
 #include <cstdint>
 
 #include "mptrack/math/constants.h"
 #include "mptrack/status.h"
+#include "mptrack/tracker_params.h"
 #include "mptrack/validate.h"
 
 namespace mptrack {
@@ -15,28 +19,31 @@ namespace mptrack {
 template <class T>
 struct GnnParams {
   // --- models ---
-  T accel_std_mps2 = T(2);          ///< CV white-acceleration std per axis [m/s^2] (spec 2.5: 2)
-  T sigma_range_m = T(0.2);         ///< range noise std [m] (spec 2.5: R floor 0.2 m)
-  T sigma_azimuth_rad = T(0.01);    ///< azimuth noise std [rad]
-  T init_velocity_std_mps = T(10);  ///< velocity std of a new track, per axis [m/s] (spec 2.5: 10)
+  /// CV white-acceleration variance q per axis [m^2/s^4] ((2 m/s^2)^2;
+  /// docs/algorithms/gnn.md §Departures from the paper), in [0, 1e6].
+  T accel_var_m2ps4 = T(4);
+  /// Measurement noise; range std 0.2 m is the R floor of
+  /// docs/algorithms/gnn.md §Departures from the paper. Doppler is unused.
+  PolarNoise<T> noise{T(0.2), T(0.01), T(1)};
+  /// Velocity std of a new track, per axis [m/s] (docs/algorithms/gnn.md
+  /// §Departures from the paper: 10).
+  T init_velocity_std_mps = T(10);
 
   // --- association ---
   /// Gate on the squared Mahalanobis distance nu^T S^-1 nu [-]:
-  /// chi2_2(0.999) = 13.8155 (spec 2.5). Also the cost of leaving a track
-  /// unassigned (see gnn_tracker.h, association).
+  /// chi2_2(0.999) = 13.8155 (seed 004 Sec. V-A). Also the cost of leaving
+  /// a track unassigned (see gnn_tracker.h, association).
   T gate_chi2 = T(13.8155);
 
-  // --- track management (spec 2.5: trackerGNN [3 5] / [5 5]) ---
+  // --- track management (MATLAB trackerGNN [3 5] / [5 5]) ---
   std::uint32_t confirm_hits = 3;    ///< M: hits needed within the last confirm_window scans [-]
   std::uint32_t confirm_window = 5;  ///< N: window of the M-of-N rule [scans], <= 32
   std::uint32_t max_misses = 5;      ///< delete after this many consecutive misses [scans]
-  bool report_tentative = false;     ///< false: outputs hold confirmed tracks only (spec 2.5)
+  /// false: outputs hold confirmed tracks only (docs/algorithms/gnn.md §Reporting).
+  bool report_tentative = false;
 
   // --- surveillance region: measurements outside are rejected and counted ---
-  T min_range_m = T(0.5);                    ///< [m], >= 0
-  T max_range_m = T(200);                    ///< [m], > min_range_m
-  T min_azimuth_rad = -dmath::kPi<T>;        ///< [rad], >= -pi
-  T max_azimuth_rad = dmath::kPi<T>;         ///< [rad], <= pi, > min_azimuth_rad
+  PolarRegion<T> region{T(0.5), T(200), -dmath::kPi<T>, dmath::kPi<T>};
 
   // --- scan gaps (scan_clock.h, docs/reliability.md F1) ---
   /// A scan more than this after the previous one drops every track
@@ -47,45 +54,41 @@ struct GnnParams {
   T min_variance = T(1e-6);  ///< diagonal floor used when a covariance is repaired [m^2 or (m/s)^2]
 
   // --- bounds (docs/reliability.md F12) ---
-  // Every std below is squared, and the azimuth std is multiplied by the
-  // range (polar_initiate: (r sigma_az)^2), in float. The bounds keep each
-  // variance and each product far from float overflow (3.4e38) and above
-  // the denormal range, and keep the position covariance of a new track
-  // well conditioned in float (cross-range std <= kMaxStdRatio range std:
-  // condition number <= 1e6, float epsilon 6e-8).
-  static constexpr T kMaxRangeM = T(1e7);         ///< max_range_m ceiling [m] (10 000 km)
-  static constexpr T kMinStdM = T(1e-3);          ///< sigma_range_m floor [m]
-  static constexpr T kMaxStdM = T(1e4);           ///< sigma_range_m ceiling [m]
-  static constexpr T kMinStdRad = T(1e-6);        ///< sigma_azimuth_rad floor [rad]
-  static constexpr T kMaxStdRad = T(1);           ///< sigma_azimuth_rad ceiling [rad]
+  // Every std is squared, and the azimuth std is multiplied by the range
+  // (polar_initiate: (r sigma_az)^2), in float. PolarNoise and PolarRegion
+  // keep each variance and each product far from float overflow (3.4e38)
+  // and above the denormal range; kMaxStdRatio keeps the position
+  // covariance of a new track well conditioned in float (cross-range std
+  // <= kMaxStdRatio range std: condition number <= 1e6, float epsilon 6e-8).
+  static constexpr T kMaxAccelVar = T(1e6);       ///< accel_var_m2ps4 ceiling [m^2/s^4]
   static constexpr T kMinVelocityStdMps = T(1e-3);  ///< init_velocity_std_mps floor [m/s]
   static constexpr T kMaxVelocityStdMps = T(1e4); ///< init_velocity_std_mps ceiling [m/s]
-  static constexpr T kMaxStdRatio = T(1e3);       ///< max_range_m sigma_az / sigma_range [-]
+  static constexpr T kMaxStdRatio = T(1e3);       ///< region.range_max_m azimuth std / range std [-]
   static constexpr T kMaxGateChi2 = T(1e4);       ///< gate_chi2 ceiling [-]
   static constexpr T kMinVarianceFloor = T(1e-12);  ///< min_variance range [m^2] ...
   static constexpr T kMaxVarianceFloor = T(1e2);    ///< ... (default 1e-6)
+  static constexpr std::uint32_t kMaxConfirmWindow = 32;  ///< bits of GnnTrack::hit_history
 
-  /// One check per documented constraint; kInvalidArgument on the first failure.
-  Status validate() const {
-    MPTRACK_TRY(check_range(accel_std_mps2, T(0), T(1e3)));
-    MPTRACK_TRY(check_range(sigma_range_m, kMinStdM, kMaxStdM));
-    MPTRACK_TRY(check_range(sigma_azimuth_rad, kMinStdRad, kMaxStdRad));
-    MPTRACK_TRY(check_range(init_velocity_std_mps, kMinVelocityStdMps, kMaxVelocityStdMps));
-    MPTRACK_TRY(check_positive(gate_chi2));
-    MPTRACK_TRY(check(!(gate_chi2 > kMaxGateChi2)));
-    MPTRACK_TRY(check(confirm_hits >= 1 && confirm_hits <= confirm_window));
-    MPTRACK_TRY(check(confirm_window >= 1 && confirm_window <= 32));
-    MPTRACK_TRY(check(max_misses >= 1 && max_misses <= 1000000));
-    MPTRACK_TRY(check_range(min_range_m, T(0), max_range_m));
-    MPTRACK_TRY(check_positive(max_range_m));
-    MPTRACK_TRY(check(!(max_range_m > kMaxRangeM)));
-    MPTRACK_TRY(check(max_range_m > min_range_m));
-    MPTRACK_TRY(check(!(max_range_m * sigma_azimuth_rad > kMaxStdRatio * sigma_range_m)));
-    MPTRACK_TRY(check_range(min_azimuth_rad, -dmath::kPi<T>, dmath::kPi<T>));
-    MPTRACK_TRY(check_range(max_azimuth_rad, -dmath::kPi<T>, dmath::kPi<T>));
-    MPTRACK_TRY(check(max_azimuth_rad > min_azimuth_rad));
-    MPTRACK_TRY(check_range(min_variance, kMinVarianceFloor, kMaxVarianceFloor));
-    MPTRACK_TRY(check_range(max_gap_s, T(1e-3), T(1e6)));
+  /// One check per documented constraint; on the first failure names the
+  /// field in *where (if given) and returns kInvalidArgument.
+  Status validate(ParamError* where = nullptr) const {
+    MPTRACK_CHECK_PARAM(where, "accel_var_m2ps4", check_range(accel_var_m2ps4, T(0), kMaxAccelVar));
+    MPTRACK_TRY(noise.validate(where));
+    MPTRACK_CHECK_PARAM(where, "init_velocity_std_mps",
+                        check_range(init_velocity_std_mps, kMinVelocityStdMps, kMaxVelocityStdMps));
+    MPTRACK_CHECK_PARAM(where, "gate_chi2", check_positive(gate_chi2));
+    MPTRACK_CHECK_PARAM(where, "gate_chi2", check(!(gate_chi2 > kMaxGateChi2)));
+    MPTRACK_CHECK_PARAM(where, "confirm_hits", check(confirm_hits >= 1 && confirm_hits <= confirm_window));
+    MPTRACK_CHECK_PARAM(where, "confirm_window",
+                        check(confirm_window >= 1 && confirm_window <= kMaxConfirmWindow));
+    MPTRACK_CHECK_PARAM(where, "max_misses", check(max_misses >= 1 && max_misses <= 1000000));
+    MPTRACK_TRY(region.validate(where));
+    MPTRACK_CHECK_PARAM(where, "noise.azimuth_std_rad",
+                        check(!(region.range_max_m * noise.azimuth_std_rad >
+                                kMaxStdRatio * noise.range_std_m)));
+    MPTRACK_CHECK_PARAM(where, "min_variance",
+                        check_range(min_variance, kMinVarianceFloor, kMaxVarianceFloor));
+    MPTRACK_CHECK_PARAM(where, "max_gap_s", check_range(max_gap_s, T(1e-3), T(1e6)));
     return Status::kOk;
   }
 };

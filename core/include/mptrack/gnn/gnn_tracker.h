@@ -71,12 +71,17 @@ class GnnTracker {
   static constexpr std::size_t kMaxTracks = Caps::kMaxTargets;
   static constexpr std::size_t kMaxMeasurements = Caps::kMaxMeasurements;
 
-  /// Validates params (GnnParams::validate) and resets the tracker: no
+  /// Checks params (GnnParams::validate; no field depends on Caps); on
+  /// failure names the field in *where (validate.h).
+  static Status validate(const Params& p, ParamError* where = nullptr) { return p.validate(where); }
+
+  /// Validates params (validate() above) and resets the tracker: no
   /// tracks, zero counters, ids restart at 1. On failure the tracker is
   /// left uninitialised.
   Status init(const Params& params) {
+    static_assert(tracker_contract_holds<GnnTracker>());  // tracker_contract.h
     initialized_ = false;
-    MPTRACK_TRY(params.validate());
+    MPTRACK_TRY(validate(params));
     params_ = params;
     tracks_.clear();
     outputs_.clear();
@@ -117,7 +122,7 @@ class GnnTracker {
     if (clock_.has_time()) {
       const T dt = clock_.elapsed_s(scan.time_us, T(0));
       for (auto& t : tracks_) {
-        model::cv_predict(t.x, t.P, dt, params_.accel_std_mps2 * params_.accel_std_mps2);
+        model::cv_predict(t.x, t.P, dt, params_.accel_var_m2ps4);
         if (model::keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
       }
     }
@@ -153,10 +158,10 @@ class GnnTracker {
     std::size_t duplicate = 0;
     counters_.measurements_in += scan.measurements.size();
     model::MeasurementValidator<T> check;  // model/measurement_validator.h; amplitude unused
-    check.min0 = params_.min_range_m;
-    check.max0 = params_.max_range_m;
-    check.min1 = params_.min_azimuth_rad;
-    check.max1 = params_.max_azimuth_rad;
+    check.min0 = params_.region.range_min_m;
+    check.max0 = params_.region.range_max_m;
+    check.min1 = params_.region.azimuth_min_rad;
+    check.max1 = params_.region.azimuth_max_rad;
     for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
       const Measurement<T>& m = scan.measurements[j];
       const bool ok = check.valid(m);
@@ -189,7 +194,7 @@ class GnnTracker {
     const T gate = params_.gate_chi2;
     for (std::size_t i = 0; i < n_tracks; ++i) {
       const GnnTrack<T>& t = tracks_[i];
-      pred_[i] = polar_predict(t.x, t.P, params_.sigma_range_m, params_.sigma_azimuth_rad);
+      pred_[i] = polar_predict(t.x, t.P, params_.noise.range_std_m, params_.noise.azimuth_std_rad);
       for (std::size_t j = 0; j < n_meas; ++j) {
         T cost = T(1);  // outside the gate (never chosen, see header)
         if (pred_[i].valid) {
@@ -223,7 +228,7 @@ class GnnTracker {
         const std::size_t scan_j = valid_[static_cast<std::size_t>(assigned_[i])];
         const Measurement<T>& m = scan.measurements[scan_j];
         polar_update(t.x, t.P, polar_innovation(m.range_m, m.azimuth_rad, pred_[i]), pred_[i],
-                     params_.sigma_range_m, params_.sigma_azimuth_rad);
+                     params_.noise.range_std_m, params_.noise.azimuth_std_rad);
         if (model::keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
         t.measurement_index = static_cast<std::int32_t>(scan_j);
       }
@@ -258,7 +263,7 @@ class GnnTracker {
       const Measurement<T>& m = scan.measurements[valid_[j]];
       GnnTrack<T> t;
       t.id = next_id_++;
-      polar_initiate(m.range_m, m.azimuth_rad, params_.sigma_range_m, params_.sigma_azimuth_rad,
+      polar_initiate(m.range_m, m.azimuth_rad, params_.noise.range_std_m, params_.noise.azimuth_std_rad,
                      params_.init_velocity_std_mps, t.x, t.P);
       t.measurement_index = static_cast<std::int32_t>(valid_[j]);
       record_scan(t, true);

@@ -127,7 +127,7 @@ void polar_initiate(T range_m, T azimuth_rad, T sigma_range_m, T sigma_azimuth_r
   // Cross-range std floored at 1e-3 x the range std: near r = 0 the polar
   // covariance is rank one (fuzz_params, docs/reliability.md F12), and the
   // floor keeps the position block's condition number <= 1e6, which float
-  // factorises. GnnParams bounds the other side (max_range_m sigma_az <=
+  // factorises. GnnParams bounds the other side (region.range_max_m azimuth std <=
   // 1e3 sigma_r). The floor only binds below r = 1e-3 sigma_r / sigma_az
   // (2 cm with the defaults).
   const T r_floor = T(1e-3) * sigma_range_m / sigma_azimuth_rad;

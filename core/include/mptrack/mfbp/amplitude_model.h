@@ -12,9 +12,6 @@
 
 namespace mptrack::mfbp {
 
-/// Swerling case -> Gamma shape n of the received power (I: 1, III: 2).
-inline int swerling_order(int swerling) { return swerling == 3 ? 2 : 1; }
-
 /// P_D for total mean power varsigma = 1 + snr (linear), threshold d.
 /// kExact: P(u > d^2) for u ~ Gamma(n, varsigma/n) = e^-x sum_{l<n} x^l/l!,
 /// x = n d^2 / varsigma (docs/algorithms/models.md §Detection probability).

@@ -146,7 +146,7 @@ class Associator {
   T store_track_beliefs(std::size_t k, const Scan& s, Tracks& tracks, const MfbpParams<T>& p,
                         const ModelConstants<T>& mc, const TrackList& bp_track, std::size_t nbt,
                         std::array<T, kMaxMeas>& new_share) {
-    const T d = p.amplitude_threshold;
+    const T d = p.amplitude.threshold;
     T delta = T(0);
     for (std::size_t i = 0; i < nbt; ++i) {
       TrackSlot<T, Caps>& t = tracks[bp_track[i]];
@@ -203,7 +203,7 @@ class Associator {
   /// Clutter statistics per source slot for the clutter chain.
   void store_clutter_stats(std::size_t k, Scan& s, const Sources& src, const ClutterTable<T, Caps>& cl,
                            const MfbpParams<T>& p) const {
-    const T d = p.amplitude_threshold;
+    const T d = p.amplitude.threshold;
     s.clear_source_stats();
     for (std::size_t q = 0; q < src.count; ++q) {
       const std::size_t slot = src.slot[q];

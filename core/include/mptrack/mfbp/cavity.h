@@ -39,7 +39,7 @@ bool remove_pseudo_measurement(Vec2<T>& z_hat, Mat2<T>& Sz, const Vec2<T>& e_bar
   S_cav << info(1, 1) / det_i, -info(0, 1) / det_i, -info(1, 0) / det_i, info(0, 0) / det_i;
   const Vec2<T> g(w * r_inv_diag(0) * e_bar(0), w * r_inv_diag(1) * e_bar(1));
   z_hat -= S_cav * g;
-  z_hat(1) = wrap_angle(z_hat(1));
+  z_hat(1) = model::wrap_angle(z_hat(1));
   Sz = S_cav;
   return true;
 }

@@ -66,13 +66,15 @@ void dirichlet_chain(ClutterTable<T, Caps>& cl, const WindowStore<T, Caps>& stor
 template <class T, class Caps>
 void uniform_cnr_chain(UniformSlot<T, Caps>& u, const WindowStore<T, Caps>& store, std::size_t n,
                        const MfbpParams<T>& p, int n_order) {
-  using IG = InverseGamma<T>;
+  using IG = model::InverseGamma<T>;
   const T g_ig = T(1) / p.forgetting_clutter;
   const T tn = T(n_order);
   IG prev = u.ig0;
   for (std::size_t k = 0; k < n; ++k) {
     IG f = prev.predicted(p.forgetting_clutter);
-    if (p.use_amplitude) f.update(tn * store.win(k).amp_stats[0].w, tn * store.win(k).amp_stats[0].s);
+    if (p.amplitude.use_amplitude) {
+      f.update(tn * store.win(k).amp_stats[0].w, tn * store.win(k).amp_stats[0].s);
+    }
     u.igf[k] = f;
     prev = f;
   }
@@ -83,7 +85,7 @@ void uniform_cnr_chain(UniformSlot<T, Caps>& u, const WindowStore<T, Caps>& stor
       B_amp.s = g_ig * (B_amp.s + store.win(kk + 1).amp_stats[0].s);
     }
     IG s = u.igf[kk];
-    if (p.use_amplitude) s.update(tn * B_amp.w, tn * B_amp.s);
+    if (p.amplitude.use_amplitude) s.update(tn * B_amp.w, tn * B_amp.s);
     u.igs[kk] = s;
   }
 }
@@ -92,7 +94,7 @@ void uniform_cnr_chain(UniformSlot<T, Caps>& u, const WindowStore<T, Caps>& stor
 template <class T, class Caps>
 void component_chain(CompSlot<T, Caps>& cs, std::size_t src, const WindowStore<T, Caps>& store,
                      std::size_t n, const MfbpParams<T>& p, int n_order) {
-  using IG = InverseGamma<T>;
+  using IG = model::InverseGamma<T>;
   using NW = NormalWishart<T>;
   const T g_ig = T(1) / p.forgetting_clutter;
   const T tn = T(n_order);
@@ -104,7 +106,9 @@ void component_chain(CompSlot<T, Caps>& cs, std::size_t src, const WindowStore<T
     cs.nwf[k] = nw;
     nw_prev = nw;
     IG ig = ig_prev.predicted(p.forgetting_clutter);
-    if (p.use_amplitude) ig.update(tn * store.win(k).amp_stats[src].w, tn * store.win(k).amp_stats[src].s);
+    if (p.amplitude.use_amplitude) {
+      ig.update(tn * store.win(k).amp_stats[src].w, tn * store.win(k).amp_stats[src].s);
+    }
     cs.igf[k] = ig;
     ig_prev = ig;
   }
@@ -121,7 +125,7 @@ void component_chain(CompSlot<T, Caps>& cs, std::size_t src, const WindowStore<T
     s.update(B_nw);
     cs.nws[kk] = s;
     IG is = cs.igf[kk];
-    if (p.use_amplitude) is.update(tn * B_amp.w, tn * B_amp.s);
+    if (p.amplitude.use_amplitude) is.update(tn * B_amp.w, tn * B_amp.s);
     cs.igs[kk] = is;
   }
 }

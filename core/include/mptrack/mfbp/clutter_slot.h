@@ -14,7 +14,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "mptrack/mfbp/inverse_gamma.h"
+#include "mptrack/mfbp/amplitude_stats.h"
+#include "mptrack/model/inverse_gamma.h"
 #include "mptrack/mfbp/normal_wishart.h"
 
 namespace mptrack::mfbp {
@@ -23,7 +24,7 @@ template <class T, class Caps>
 struct CompSlot {
   static constexpr std::size_t kMaxWindow = Caps::kMaxWindow;
   using NW = NormalWishart<T>;
-  using IG = InverseGamma<T>;
+  using IG = model::InverseGamma<T>;
 
   bool alive = false;
   std::uint32_t id = 0;
@@ -65,7 +66,7 @@ struct CompSlot {
 template <class T, class Caps>
 struct UniformSlot {
   static constexpr std::size_t kMaxWindow = Caps::kMaxWindow;
-  using IG = InverseGamma<T>;
+  using IG = model::InverseGamma<T>;
 
   IG ig0{};
   T alpha0 = T(30);

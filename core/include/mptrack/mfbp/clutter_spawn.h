@@ -97,8 +97,8 @@ class ClutterSpawner {
 
   /// Sets the grid to the params' cells, coarsened until they fit.
   bool reset_grid(Grid& g, const MfbpParams<T>& p) {
-    const T span_r = p.r_max_m - p.r_min_m;
-    const T span_a = p.az_max_rad - p.az_min_rad;
+    const T span_r = p.region.range_max_m - p.region.range_min_m;
+    const T span_a = p.region.azimuth_max_rad - p.region.azimuth_min_rad;
     for (int attempt = 0; attempt < 16; ++attempt) {
       const std::size_t nr = static_cast<std::size_t>(span_r / g.cell_r) + 1u;
       g.na = static_cast<std::size_t>(span_a / g.cell_a) + 1u;
@@ -110,8 +110,8 @@ class ClutterSpawner {
   }
 
   static std::size_t cell_index(T r, T az, const Grid& g, const MfbpParams<T>& p) {
-    const std::size_t ir = static_cast<std::size_t>((r - p.r_min_m) / g.cell_r);
-    const std::size_t ia = static_cast<std::size_t>((az - p.az_min_rad) / g.cell_a);
+    const std::size_t ir = static_cast<std::size_t>((r - p.region.range_min_m) / g.cell_r);
+    const std::size_t ia = static_cast<std::size_t>((az - p.region.azimuth_min_rad) / g.cell_a);
     return ir * g.na + ia;
   }
 
@@ -144,7 +144,7 @@ class ClutterSpawner {
         for (std::size_t j = 0; j < s.count; ++j) {
           if (pooled_[si][j] == 0) continue;
           const T er = s.r[j] - nw.mu(0);
-          const T ea = wrap_angle(s.az[j] - nw.mu(1));
+          const T ea = model::wrap_angle(s.az[j] - nw.mu(1));
           if (gate.distance2(er, ea) < p.clutter_gate_chi2) pooled_[si][j] = 0;
         }
       }
@@ -167,7 +167,7 @@ class ClutterSpawner {
         }
         seed.st.add(Vec2<T>(s.r[j], s.az[j]), T(1));
         seed.as.w += T(1);
-        seed.as.s += s.amp[j] * s.amp[j] - p.amplitude_threshold * p.amplitude_threshold;
+        seed.as.s += s.amp[j] * s.amp[j] - p.amplitude.threshold * p.amplitude.threshold;
       }
     }
     return seed;
@@ -186,7 +186,7 @@ class ClutterSpawner {
     cs.alive = true;
     cs.id = next_id++;
     cs.nw0.mu = seed.st.ref + off;
-    cs.nw0.mu(1) = wrap_angle(cs.nw0.mu(1));
+    cs.nw0.mu(1) = model::wrap_angle(cs.nw0.mu(1));
     cs.nw0.c = per_scan;
     cs.nw0.nu = per_scan + T(3);
     cs.nw0.w_inv = cs.nw0.nu * S;  // W = S^-1 / nu  =>  W^-1 = nu S

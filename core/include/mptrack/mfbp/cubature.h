@@ -11,7 +11,6 @@
 #include <Eigen/Core>
 
 #include "mptrack/math/detmath.h"
-#include "mptrack/mfbp/cholesky.h"  // mfbp:: names of model/cholesky.h
 #include "mptrack/model/cholesky.h"
 #include "mptrack/model/polar_measurement.h"
 
@@ -22,9 +21,6 @@ template <class T> using Vec4 = Eigen::Matrix<T, 4, 1>;
 template <class T> using Mat2 = Eigen::Matrix<T, 2, 2>;
 template <class T> using Mat4 = Eigen::Matrix<T, 4, 4>;
 template <class T> using Mat42 = Eigen::Matrix<T, 4, 2>;
-
-using model::polar_of_state;
-using model::wrap_angle;
 
 /// Moments of h(x) for x ~ N(x_hat, P) (M = 2 or 3 rows, see model::polar_measure):
 /// predicted measurement z_hat, its covariance Sz (without R) and the
@@ -47,12 +43,12 @@ bool cubature_moments(const Vec4<T>& x_hat, const Mat4<T>& P, Eigen::Matrix<T, M
     const T sign = (p & 1) ? T(-1) : T(1);
     dx[p] = sign * scale * L.col(col);
     dz[p] = model::polar_measure<T, M>(x_hat + dx[p]) - z_center;
-    dz[p](1) = wrap_angle(dz[p](1));
+    dz[p](1) = model::wrap_angle(dz[p](1));
     mean_dz += dz[p];
   }
   mean_dz *= T(0.125);
   z_hat = z_center + mean_dz;
-  z_hat(1) = wrap_angle(z_hat(1));
+  z_hat(1) = model::wrap_angle(z_hat(1));
   Sz.setZero();
   Cxz.setZero();
   for (int p = 0; p < 8; ++p) {

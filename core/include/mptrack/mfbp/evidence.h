@@ -78,11 +78,11 @@ template <class T, class Caps, class Bp, std::size_t S>
 void known_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, const ClutterSources<S>& src,
                             const MfbpParams<T>& p, const ModelConstants<T>& mc, T log_dop_clutter) {
   const auto& kc = p.known_clutter;
-  const T d = p.amplitude_threshold;
+  const T d = p.amplitude.threshold;
   const T lu = dmath::dlog(kc.uniform_rate_per_scan) - mc.log_volume + log_dop_clutter;
   for (std::size_t j = 0; j < s.count; ++j) {
     T v = lu;
-    if (p.use_amplitude) v += amplitude_loglik(s.amp[j], d, T(1) + kc.uniform_cnr, mc.n_order);
+    if (p.amplitude.use_amplitude) v += amplitude_loglik(s.amp[j], d, T(1) + kc.uniform_cnr, mc.n_order);
     bp.set_clutter_log(0, j, v);
   }
   for (std::size_t q = 1; q < src.count; ++q) {
@@ -94,11 +94,11 @@ void known_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, const ClutterSou
     const T base = dmath::dlog(comp.rate_per_scan) - dmath::kLnTwoPi<T> - T(0.5) * dmath::dlog(dist.det()) +
                    log_dop_clutter;
     for (std::size_t j = 0; j < s.count; ++j) {
-      const Vec2<T> e(s.r[j] - comp.mean(0), wrap_angle(s.az[j] - comp.mean(1)));
+      const Vec2<T> e(s.r[j] - comp.mean(0), model::wrap_angle(s.az[j] - comp.mean(1)));
       const T maha = dist.distance2(e);
       if (maha > p.clutter_gate_chi2) continue;
       T v = base - T(0.5) * maha;
-      if (p.use_amplitude) v += amplitude_loglik(s.amp[j], d, T(1) + comp.cnr, mc.n_order);
+      if (p.amplitude.use_amplitude) v += amplitude_loglik(s.amp[j], d, T(1) + comp.cnr, mc.n_order);
       bp.set_clutter_log(q, j, v);
     }
   }
@@ -111,7 +111,7 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
                                 const ClutterSources<S>& src, const ClutterTable<T, Caps>& cl,
                                 T lambda, const MfbpParams<T>& p, const ModelConstants<T>& mc,
                                 T log_dop_clutter) {
-  const T d = p.amplitude_threshold;
+  const T d = p.amplitude.threshold;
   std::array<T, S> alpha{}, e_log_pi{};
   T log_rate = T(0);
   if (estimate_clutter(p)) {
@@ -122,17 +122,19 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
     e_log_pi[0] = T(0);
     log_rate = dmath::dlog(p.uniform_rate_per_scan);
   }
-  const InverseGamma<T>& ig0 = cl.uniform.igs[k];
+  const model::InverseGamma<T>& ig0 = cl.uniform.igs[k];
   const T lu = log_rate + e_log_pi[0] - mc.log_volume + log_dop_clutter;
   for (std::size_t j = 0; j < s.count; ++j) {
     T v = lu;
-    if (p.use_amplitude) v += expected_amplitude_loglik(s.amp[j], d, ig0.a, ig0.b, mc.n_order, p.amp_loglik);
+    if (p.amplitude.use_amplitude) {
+      v += expected_amplitude_loglik(s.amp[j], d, ig0.a, ig0.b, mc.n_order, p.amp_loglik);
+    }
     bp.set_clutter_log(0, j, v);
   }
   for (std::size_t q = 1; q < src.count; ++q) {
     const CompSlot<T, Caps>& cs = cl.comps[src.slot[q] - 1];
     const NormalWishart<T>& nw = cs.nws[k];
-    const InverseGamma<T>& ig = cs.igs[k];
+    const model::InverseGamma<T>& ig = cs.igs[k];
     bp.set_clutter_absent(q, p.component_absent_evidence);
     const T base = log_rate + e_log_pi[q] + nw.expected_log_norm() + log_dop_clutter;
     for (std::size_t j = 0; j < s.count; ++j) {
@@ -140,7 +142,9 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
       const T em = nw.expected_mahalanobis(y);
       if (em - T(2) / nw.c > p.clutter_gate_chi2) continue;
       T v = base - T(0.5) * em;
-      if (p.use_amplitude) v += expected_amplitude_loglik(s.amp[j], d, ig.a, ig.b, mc.n_order, p.amp_loglik);
+      if (p.amplitude.use_amplitude) {
+        v += expected_amplitude_loglik(s.amp[j], d, ig.a, ig.b, mc.n_order, p.amp_loglik);
+      }
       bp.set_clutter_log(q, j, v);
     }
   }
@@ -177,7 +181,7 @@ void cavity_moments(const TrackSlot<T, Caps>& t, std::size_t k, const ScanSlot<T
     const std::size_t j = t.edge_meas[k][e];
     const T a = t.edge_w[k][e];
     acc(0) += a * (s.r[j] - z_hat(0));
-    acc(1) += a * wrap_angle(s.az[j] - z_hat(1));
+    acc(1) += a * model::wrap_angle(s.az[j] - z_hat(1));
     w_sum += a;
   }
   if (!(w_sum > p.w_min)) return;
@@ -232,7 +236,7 @@ void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Ca
     for (std::size_t b = 0; b < N; ++b) {
       const TrackMoments<T>& mb = moments[b];
       if (b == a || !mb.ok) continue;
-      const Vec2<T> e(mb.z(0) - ma.z(0), wrap_angle(mb.z(1) - ma.z(1)));
+      const Vec2<T> e(mb.z(0) - ma.z(0), model::wrap_angle(mb.z(1) - ma.z(1)));
       const model::Mahalanobis2<T> dist(ma.Sz + mb.Sz);
       if (!dist.valid()) continue;
       const T d2 = dist.distance2(e);
@@ -245,7 +249,7 @@ void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Ca
       }
     }
     ma.z_shared = sum / count;
-    ma.z_shared(1) = wrap_angle(ma.z_shared(1));
+    ma.z_shared(1) = model::wrap_angle(ma.z_shared(1));
   }
 }
 
@@ -309,11 +313,11 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
                             std::size_t k, const MfbpParams<T>& p, const ModelConstants<T>& mc,
                             GateList<T, G>& list) {
   const Vec2<T>& z_hat = mo.z_shared;
-  const T var_d = p.sigma_doppler_mps * p.sigma_doppler_mps;
+  const T var_d = p.noise.doppler_std_mps * p.noise.doppler_std_mps;
   const T trace_term = (mc.R_inv * mo.Sz).trace();
   std::size_t dropped = 0;
   for (std::size_t j = 0; j < s.count; ++j) {
-    const Vec2<T> e(s.r[j] - z_hat(0), wrap_angle(s.az[j] - z_hat(1)));
+    const Vec2<T> e(s.r[j] - z_hat(0), model::wrap_angle(s.az[j] - z_hat(1)));
     if (gate.distance2(e) > p.gate_chi2) continue;
     T v = mc.log_norm_R - T(0.5) * (e.dot(mc.R_inv * e) + trace_term);
     if (s.doppler) {
@@ -326,8 +330,8 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
       const T var = var_d + mo.var_dop;
       v += -T(0.5) * (dmath::kLnTwoPi<T> + dmath::dlog(var)) - T(0.5) * ed * ed / var;
     }
-    if (p.use_amplitude) {
-      v += expected_amplitude_loglik(s.amp[j], p.amplitude_threshold, t.igs[k].a, t.igs[k].b,
+    if (p.amplitude.use_amplitude) {
+      v += expected_amplitude_loglik(s.amp[j], p.amplitude.threshold, t.igs[k].a, t.igs[k].b,
                                      mc.n_order, p.amp_loglik);
     }
     if (list.offer(v, j)) ++dropped;

@@ -1,5 +1,5 @@
-// The MF-BP capacities read from a caps type (caps.h), with defaults, and the
-// check of the run-time params against them.
+// The MF-BP capacities read from a caps type (caps.h), with defaults
+// (MfbpTracker::validate() checks the run-time params against them).
 //
 // MF-BP has three scratch capacities beyond the four every tracker shares:
 // the gated pairs kept per track and scan (the sparse association of
@@ -12,8 +12,6 @@
 #include <cstddef>
 #include <type_traits>
 
-#include "mptrack/mfbp/mfbp_params.h"
-#include "mptrack/status.h"
 
 namespace mptrack::mfbp {
 
@@ -62,15 +60,6 @@ constexpr bool mfbp_caps_are_valid() {
                 "Caps::kMaxClutterGridCells must be in [1, 65535] (16-bit cell index)");
   static_assert(kMaxBirthCandidates<Caps> >= 1, "Caps::kMaxBirthCandidates must be >= 1");
   return true;
-}
-
-/// The params checks that depend on the caps beyond the window length
-/// (validate(params, max_window) in mfbp_params.h covers that one):
-/// birth_max_per_window above the candidate cap would be cut silently.
-template <class T, class Caps>
-[[nodiscard]] Status validate_against_caps(const MfbpParams<T>& p) {
-  if (p.birth_max_per_window > kMaxBirthCandidates<Caps>) return Status::kInvalidArgument;
-  return Status::kOk;
 }
 
 }  // namespace mptrack::mfbp

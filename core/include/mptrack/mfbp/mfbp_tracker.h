@@ -106,12 +106,27 @@ class MfbpTracker {
   using Estimate = ScanEstimate<T, kMaxTargets, kMaxComp>;
   using OutputQueue = StaticVector<Estimate, kMaxWindow>;
 
-  /// Validates params (mfbp_params.h, and against the caps: mfbp_caps.h)
-  /// and resets every state.
+  /// Checks params (MfbpParams::validate) and against the caps this
+  /// tracker was instantiated with: the window, the ranked birth
+  /// candidates (mfbp_caps.h; more would be cut silently) and the known
+  /// clutter components. On failure names the field in *where (validate.h).
+  static Status validate(const Params& p, ParamError* where = nullptr) {
+    MPTRACK_TRY(p.validate(where));
+    MPTRACK_CHECK_PARAM(where, "window_length", check(p.window_length <= kMaxWindow));
+    MPTRACK_CHECK_PARAM(where, "birth_max_per_window",
+                        check(p.birth_max_per_window <= mfbp::kMaxBirthCandidates<Caps>));
+    if (p.clutter_mode == ClutterMode::kKnownMap) {
+      MPTRACK_CHECK_PARAM(where, "known_clutter.num_components",
+                          check(p.known_clutter.num_components <= kMaxComp));
+    }
+    return Status::kOk;
+  }
+
+  /// Validates params (validate() above) and resets every state.
   Status init(const Params& params) {
+    static_assert(tracker_contract_holds<MfbpTracker>());  // tracker_contract.h
     initialized_ = false;
-    MPTRACK_TRY(validate(params, kMaxWindow));
-    MPTRACK_TRY((mfbp::validate_against_caps<T, Caps>(params)));
+    MPTRACK_TRY(validate(params));
     params_ = params;
     model_.set(params);
     for (auto& t : tracks_) t.alive = false;
@@ -139,7 +154,7 @@ class MfbpTracker {
     if (!initialized_) return Status::kNotInitialized;
     Params p = params_;
     p.known_clutter = kc;
-    MPTRACK_TRY(validate(p, kMaxWindow));
+    MPTRACK_TRY(validate(p));
     params_.known_clutter = kc;
     return Status::kOk;
   }

@@ -13,7 +13,8 @@
 #include "mptrack/math/detmath.h"
 #include "mptrack/mfbp/amplitude_model.h"
 #include "mptrack/mfbp/cubature.h"
-#include "mptrack/mfbp/inverse_gamma.h"
+#include "mptrack/mfbp/amplitude_stats.h"
+#include "mptrack/model/inverse_gamma.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/target_filter.h"
 #include "mptrack/track_report.h"
@@ -30,12 +31,12 @@ struct ModelConstants {
   Mat2<T> R_inv = Mat2<T>::Identity();
 
   void set(const MfbpParams<T>& params) {
-    n_order = swerling_order(params.swerling);
-    volume = (params.r_max_m - params.r_min_m) * (params.az_max_rad - params.az_min_rad);
+    n_order = params.amplitude.order();
+    volume = params.region.volume();
     log_volume = dmath::dlog(volume);
     R.setZero();
-    R(0, 0) = params.sigma_r_m * params.sigma_r_m;
-    R(1, 1) = params.sigma_az_rad * params.sigma_az_rad;
+    R(0, 0) = params.noise.range_std_m * params.noise.range_std_m;
+    R(1, 1) = params.noise.azimuth_std_rad * params.noise.azimuth_std_rad;
     R_inv.setZero();
     R_inv(0, 0) = T(1) / R(0, 0);
     R_inv(1, 1) = T(1) / R(1, 1);
@@ -51,9 +52,9 @@ T dt_s(std::uint64_t t_from, std::uint64_t t_to) {
 
 /// P_D at the SNR belief's mean (seed 000 eq. (21)); a constant without amplitude.
 template <class T>
-T detection_prob(const MfbpParams<T>& p, int n_order, const InverseGamma<T>& ig) {
-  if (!p.use_amplitude) return p.pd_no_amplitude;
-  return detection_probability(ig.mean(), p.amplitude_threshold, n_order, p.pd_model);
+T detection_prob(const MfbpParams<T>& p, int n_order, const model::InverseGamma<T>& ig) {
+  if (!p.amplitude.use_amplitude) return p.pd_no_amplitude;
+  return detection_probability(ig.mean(), p.amplitude.threshold, n_order, p.pd_model);
 }
 
 template <class T>

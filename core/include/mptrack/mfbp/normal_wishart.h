@@ -28,7 +28,7 @@ struct NwStats {
 
   void add(const Vec2<T>& y, T weight) {
     Vec2<T> d = y - ref;
-    d(1) = wrap_angle(d(1));
+    d(1) = model::wrap_angle(d(1));
     n += weight;
     sum += weight * d;
     sum_sq += weight * (d * d.transpose());
@@ -38,7 +38,7 @@ struct NwStats {
   void accumulate(const NwStats& o) {
     if (!(o.n > T(0))) return;
     Vec2<T> d = o.ref - ref;
-    d(1) = wrap_angle(d(1));
+    d(1) = model::wrap_angle(d(1));
     n += o.n;
     sum += o.sum + o.n * d;
     sum_sq += o.sum_sq + o.sum * d.transpose() + d * o.sum.transpose() + o.n * (d * d.transpose());
@@ -80,10 +80,10 @@ struct NormalWishart {
     const Mat2<T> scatter = s.sum_sq - N * (mean_off * mean_off.transpose());  // N Xi
     Vec2<T> x_bar = s.ref + mean_off;
     Vec2<T> d = x_bar - mu;
-    d(1) = wrap_angle(d(1));
+    d(1) = model::wrap_angle(d(1));
     const T c_new = c + N;
     mu += (N / c_new) * d;  // (c mu + N x_bar)/c' with the wrapped offset
-    mu(1) = wrap_angle(mu(1));
+    mu(1) = model::wrap_angle(mu(1));
     w_inv += scatter + (c * N / c_new) * (d * d.transpose());
     w_inv(0, 1) = w_inv(1, 0) = T(0.5) * (w_inv(0, 1) + w_inv(1, 0));
     c = c_new;
@@ -108,7 +108,7 @@ struct NormalWishart {
   /// E[(y - x^c)^T D (y - x^c)] = q / c + nu (y - mu)^T W (y - mu).
   T expected_mahalanobis(const Vec2<T>& y) const {
     Vec2<T> d = y - mu;
-    d(1) = wrap_angle(d(1));
+    d(1) = model::wrap_angle(d(1));
     const T det = w_inv(0, 0) * w_inv(1, 1) - w_inv(0, 1) * w_inv(1, 0);
     // d^T W d with W = adj(W^-1) / det(W^-1), 2x2 closed form.
     const T quad = (w_inv(1, 1) * d(0) * d(0) - T(2) * w_inv(0, 1) * d(0) * d(1) +

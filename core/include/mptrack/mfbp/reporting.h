@@ -34,7 +34,7 @@ void report_tracks(Estimate& est, std::size_t k, const ScanSlot<T, Caps>& s, Tra
     r.state = t.xs[k];
     r.covariance = t.Ps[k].get();
     r.existence = t.vis[k];
-    r.snr = p.use_amplitude ? t.igs[k].snr() : T(0);
+    r.snr = p.amplitude.use_amplitude ? t.igs[k].snr() : T(0);
     r.confirmed = true;
     r.measurement_index = t.best[k] >= 0 ? static_cast<std::int32_t>(s.orig_index[static_cast<std::size_t>(t.best[k])]) : -1;
     (void)est.tracks.push_back(r);  // cannot overflow: one report per track slot
@@ -94,7 +94,8 @@ void report_scan(Estimate& est, std::size_t k, std::uint64_t scan_index, const W
   ClutterReport<T> u;
   u.id = 0;
   u.uniform = true;
-  u.mean = Vec2<T>(T(0.5) * (p.r_min_m + p.r_max_m), T(0.5) * (p.az_min_rad + p.az_max_rad));
+  u.mean = Vec2<T>(T(0.5) * (p.region.range_min_m + p.region.range_max_m),
+                   T(0.5) * (p.region.azimuth_min_rad + p.region.azimuth_max_rad));
   u.covariance.setZero();
   if (p.clutter_mode == ClutterMode::kKnown) {
     report_known_clutter(est, u, p, Caps::kMaxClutterComponents);

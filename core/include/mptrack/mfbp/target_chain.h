@@ -45,14 +45,14 @@ void visibility_sweep(TrackSlot<T, Caps>& t, std::size_t n, const MfbpParams<T>&
 /// chi = |u_bar|^2 (1 + rho) / (2 (1 - rho)) is 1 on average. A per-scan NIS
 /// test is blind here: S1's turn leaves a lag of ~0.5 sigma per scan, which
 /// only the mean over many scans shows. Above 1 the level rises as chi^4
-/// from process_noise_var (the paper's quiet 0.01) to
+/// from accel_var_m2ps4 (the paper's quiet 0.01) to
 /// manoeuvre_noise_var_max (reached at chi = 3.2 with the defaults), so one
 /// model follows the 0.33 m/s^2 turn and averages 210-300 m cross-range
 /// noise down afterwards. The exponent and the fading factor come from an
 /// S1 sweep (docs/results/seed000-s1.md).
 template <class T>
 T manoeuvre_noise(const Vec2<T>& bias, const MfbpParams<T>& p) {
-  const T q0 = p.process_noise_var;
+  const T q0 = p.accel_var_m2ps4;
   const T rho = p.manoeuvre_fading;
   const T chi = bias.squaredNorm() * (T(1) + rho) / (T(2) * (T(1) - rho));
   const T q_max = p.manoeuvre_noise_var_max;
@@ -94,7 +94,7 @@ void pseudo_measurement_update(const TrackSlot<T, Caps>& t, const TrackSlot<T, C
                                const MfbpParams<T>& p, const ModelConstants<T>& mc,
                                TrackerCounters& counters, Vec4<T>& x, Mat4<T>& P, Vec2<T>& bias_k) {
   using Vec2 = mfbp::Vec2<T>;
-  const Vec2 z_ref = polar_of_state<T>(x);
+  const Vec2 z_ref = model::polar_of_state<T>(x);
   Vec2 acc = Vec2::Zero();
   T w_sum = T(0);
   const TrackSlot<T, Caps>* pooled[2] = {&t, mate};
@@ -104,13 +104,13 @@ void pseudo_measurement_update(const TrackSlot<T, Caps>& t, const TrackSlot<T, C
       const std::size_t j = src->edge_meas[k][e];
       const T a = src->edge_w[k][e];
       acc(0) += a * (s.r[j] - z_ref(0));
-      acc(1) += a * wrap_angle(s.az[j] - z_ref(1));
+      acc(1) += a * model::wrap_angle(s.az[j] - z_ref(1));
       w_sum += a;
     }
   }
   if (!(w_sum > p.w_min)) return;
   Vec2 y_bar = z_ref + acc / w_sum;
-  y_bar(1) = wrap_angle(y_bar(1));
+  y_bar(1) = model::wrap_angle(y_bar(1));
   Vec2 white = Vec2::Zero();
   if (s.doppler) {
     T dop = T(0);
@@ -122,7 +122,7 @@ void pseudo_measurement_update(const TrackSlot<T, Caps>& t, const TrackSlot<T, C
     Eigen::Matrix<T, 3, 3> R3 = Eigen::Matrix<T, 3, 3>::Zero();
     R3(0, 0) = mc.R(0, 0) / w_sum;
     R3(1, 1) = mc.R(1, 1) / w_sum;
-    R3(2, 2) = p.sigma_doppler_mps * p.sigma_doppler_mps / w_sum;
+    R3(2, 2) = p.noise.doppler_std_mps * p.noise.doppler_std_mps / w_sum;
     note_repair(cubature_update_m<T, 3>(x, P, y3, R3, &white), counters);
   } else {
     const Mat2<T> R_bar = mc.R / w_sum;
@@ -134,7 +134,7 @@ void pseudo_measurement_update(const TrackSlot<T, Caps>& t, const TrackSlot<T, C
 /// SNR inverse-gamma update at scan k from the association's amplitude
 /// statistics (eq. (43); snr_update selects the MF form or the mean).
 template <class T>
-void snr_update(InverseGamma<T>& ig, const AmplitudeStats<T>& amp, const MfbpParams<T>& p, T tn) {
+void snr_update(model::InverseGamma<T>& ig, const AmplitudeStats<T>& amp, const MfbpParams<T>& p, T tn) {
   if (p.snr_update == SnrUpdate::kMf) {
     ig.update(tn * amp.w, tn * amp.s);
   } else if (amp.w > p.w_min) {
@@ -153,12 +153,12 @@ void target_forward_step(TrackSlot<T, Caps>& t, std::size_t k, const TrackTable<
     t.Pf[k].set(t.P0);
     t.igf[k] = t.ig0;
     t.biasf[k] = t.bias0;
-    t.qk[k] = p.process_noise_var;
+    t.qk[k] = p.accel_var_m2ps4;
     return;
   }
   Vec4<T> x;
   Mat4<T> P;
-  InverseGamma<T> ig;
+  model::InverseGamma<T> ig;
   const Vec2<T> bias_prev = k == f ? t.bias0 : t.biasf[k - 1];
   const T q = manoeuvre_noise(bias_prev, p);
   t.qk[k] = q;
@@ -179,7 +179,7 @@ void target_forward_step(TrackSlot<T, Caps>& t, std::size_t k, const TrackTable<
   const TrackSlot<T, Caps>* mate = pooling_mate(t, k, tracks, p);
   if ((w > p.w_min && t.n_edges[k] > 0) || mate != nullptr) {
     pseudo_measurement_update(t, mate, k, store.win(k), bias_prev, p, mc, counters, x, P, bias_k);
-    if (p.use_amplitude && w > p.w_min) snr_update(ig, t.amp[k], p, T(mc.n_order));
+    if (p.amplitude.use_amplitude && w > p.w_min) snr_update(ig, t.amp[k], p, T(mc.n_order));
   }
   t.xf[k] = x;
   t.Pf[k].set(P);
@@ -216,8 +216,8 @@ void snr_smooth(TrackSlot<T, Caps>& t, std::size_t n, const MfbpParams<T>& p, in
       B.w = g * (B.w + t.amp[kk + 1].w);
       B.s = g * (B.s + t.amp[kk + 1].s);
     }
-    InverseGamma<T> s = t.igf[kk];
-    if (p.use_amplitude && p.snr_update == SnrUpdate::kMf) s.update(tn * B.w, tn * B.s);
+    model::InverseGamma<T> s = t.igf[kk];
+    if (p.amplitude.use_amplitude && p.snr_update == SnrUpdate::kMf) s.update(tn * B.w, tn * B.s);
     t.igs[kk] = s;
   }
 }

@@ -95,7 +95,7 @@ bool cubature_update_m(Vec4<T>& x, Mat4<T>& P, const Eigen::Matrix<T, M, 1>& y_b
   const Eigen::Matrix<T, M, 4> Kt = model::cholesky_solve<T, M, 4>(L, Cxz.transpose());
   const Mat4M K = Kt.transpose();
   VecM e = y_bar - z_hat;
-  e(1) = wrap_angle(e(1));
+  e(1) = model::wrap_angle(e(1));
   if (white != nullptr) *white = model::cholesky_whiten<T, M>(L, e).template head<2>();
   x += K * e;
   P -= K * S * K.transpose();

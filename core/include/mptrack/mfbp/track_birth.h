@@ -2,11 +2,9 @@
 #pragma once
 
 #include "mptrack/mfbp/cubature.h"
-#include "mptrack/mfbp/inverse_gamma.h"
+#include "mptrack/model/inverse_gamma.h"
 
 namespace mptrack::mfbp {
-
-using model::cartesian_of_polar;
 
 /// Position covariance J R J^T of the polar->Cartesian map at (r, theta),
 /// J = [[cos, -r sin], [sin, r cos]], R = diag(sigma_r^2, sigma_az^2).
@@ -55,8 +53,8 @@ bool birth_gate(const Vec2<T>& p1, const Vec2<T>& p2, T dt_s, T v_max_x, T v_max
 template <class T>
 void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, T v_max_x, T v_max_y,
                      Vec4<T>& x, Mat4<T>& P) {
-  const Vec2<T> p1 = cartesian_of_polar(r1, az1);
-  const Vec2<T> p2 = cartesian_of_polar(r2, az2);
+  const Vec2<T> p1 = model::cartesian_of_polar(r1, az1);
+  const Vec2<T> p2 = model::cartesian_of_polar(r2, az2);
   const Mat2<T> P1 = cartesian_position_covariance(r1, az1, sigma_r, sigma_az);
   const Mat2<T> P2 = cartesian_position_covariance(r2, az2, sigma_r, sigma_az);
   const Vec2<T> v = (p2 - p1) / dt_s;
@@ -93,8 +91,8 @@ void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, T 
 /// IG at birth (docs/algorithms/mfbp.md §Departures from the paper): a = shape,
 /// b = factor mean(m^2 - d^2).
 template <class T>
-InverseGamma<T> birth_snr_belief(T m1, T m2, T d, T shape, T factor) {
-  InverseGamma<T> ig;
+model::InverseGamma<T> birth_snr_belief(T m1, T m2, T d, T shape, T factor) {
+  model::InverseGamma<T> ig;
   ig.a = shape;
   T mean_excess = T(0.5) * ((m1 * m1 - d * d) + (m2 * m2 - d * d));
   if (!(mean_excess > T(1e-3))) mean_excess = T(1e-3);

@@ -17,7 +17,8 @@
 
 #include "mptrack/mfbp/amplitude_model.h"
 #include "mptrack/mfbp/cubature.h"
-#include "mptrack/mfbp/inverse_gamma.h"
+#include "mptrack/mfbp/amplitude_stats.h"
+#include "mptrack/model/inverse_gamma.h"
 #include "mptrack/mfbp/mfbp_caps.h"
 #include "mptrack/mfbp/target_filter.h"
 
@@ -30,7 +31,7 @@ struct TrackSlot {
   using Vec2 = mfbp::Vec2<T>;
   using Vec4 = mfbp::Vec4<T>;
   using Mat4 = mfbp::Mat4<T>;
-  using IG = InverseGamma<T>;
+  using IG = model::InverseGamma<T>;
   using AmpStats = AmplitudeStats<T>;
 
   bool alive = false;

@@ -100,7 +100,7 @@ class TrackSpawner {
       for (std::size_t j = 0; j < s.count; ++j) {
         if (unexplained_[si][j] == 0) continue;
         const T er = s.r[j] - z_hat(0);
-        const T ea = wrap_angle(s.az[j] - z_hat(1));
+        const T ea = model::wrap_angle(s.az[j] - z_hat(1));
         if (gate.distance2(er, ea) <= p.gate_chi2) unexplained_[si][j] = 0;
       }
     }
@@ -113,7 +113,7 @@ class TrackSpawner {
     const ScanSlot<T, Caps>& a1 = store.at(s1);
     const T r2 = store.at(s2).r[j2];
     const T dt = dt_s<T>(a1.time_us, store.at(s2).time_us);
-    const Vec2<T> p2 = cartesian_of_polar(r2, store.at(s2).az[j2]);
+    const Vec2<T> p2 = model::cartesian_of_polar(r2, store.at(s2).az[j2]);
     // Only first points within the range reach can pass the box gate
     // (birth_range_gate): start at the first one in range order, stop
     // after the last, so the search is O(log N + hits), not O(N).
@@ -136,7 +136,7 @@ class TrackSpawner {
         continue;
       }
       if (!unexplained(store, s1, j1)) continue;
-      const Vec2<T> p1 = cartesian_of_polar(a1.r[j1], a1.az[j1]);
+      const Vec2<T> p1 = model::cartesian_of_polar(a1.r[j1], a1.az[j1]);
       if (!birth_gate(p1, p2, dt, p.v_max_x_mps, p.v_max_y_mps)) continue;
       const T dist = (p2 - p1).squaredNorm();
       // Nearest first point; ties go to the lowest index (as in index order).
@@ -203,8 +203,8 @@ class TrackSpawner {
     TrackSlot<T, Caps>& t = tracks[slot];
     t.start(next_id++, c.s2 - store.n_hist(), p.visibility_at_birth);
     two_point_state(a.r[c.j1], a.az[c.j1], b.r[c.j2], b.az[c.j2], dt_s<T>(a.time_us, b.time_us),
-                    p.sigma_r_m, p.sigma_az_rad, p.v_max_x_mps, p.v_max_y_mps, t.x0, t.P0);
-    t.ig0 = birth_snr_belief(a.amp[c.j1], b.amp[c.j2], p.amplitude_threshold, p.ig_birth_shape,
+                    p.noise.range_std_m, p.noise.azimuth_std_rad, p.v_max_x_mps, p.v_max_y_mps, t.x0, t.P0);
+    t.ig0 = birth_snr_belief(a.amp[c.j1], b.amp[c.j2], p.amplitude.threshold, p.ig_birth_shape,
                              p.ig_birth_scale_factor);
     t.t0_us = b.time_us;
     ++counters.tracks_born;

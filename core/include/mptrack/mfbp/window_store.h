@@ -18,6 +18,7 @@
 
 #include "mptrack/measurement.h"
 #include "mptrack/mfbp/amplitude_model.h"
+#include "mptrack/mfbp/amplitude_stats.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/normal_wishart.h"
 #include "mptrack/track_report.h"
@@ -138,12 +139,12 @@ class WindowStore {
 
  private:
   static bool in_region(T r, T az, const MfbpParams<T>& p) {
-    return !(r < p.r_min_m) && !(r > p.r_max_m) && !(az < p.az_min_rad) && !(az > p.az_max_rad);
+    return p.region.contains(r, az);
   }
 
   static bool valid_measurement(const Measurement<T>& m, const MfbpParams<T>& p, bool doppler) {
     return is_finite(m.range_m) && is_finite(m.azimuth_rad) && is_finite(m.amplitude) &&
-           m.amplitude > p.amplitude_threshold && !(m.amplitude > p.max_amplitude) &&
+           m.amplitude > p.amplitude.threshold && !(m.amplitude > p.amplitude.max_amplitude) &&
            in_region(m.range_m, m.azimuth_rad, p) &&
            (!doppler || (is_finite(m.doppler_mps) && !(m.doppler_mps > p.doppler_span_mps) &&
                          !(m.doppler_mps < -p.doppler_span_mps)));

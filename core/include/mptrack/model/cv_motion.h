@@ -4,8 +4,8 @@
 //   F_axis = [[1, dt], [0, 1]],
 //   Q_axis = q [[dt^4/4, dt^3/2], [dt^3/2, dt^2]],   no cross-axis terms.
 // Unit convention: q is the per-axis white-acceleration VARIANCE [m^2/s^4]
-// (sigma_a^2). A tracker whose parameter is a standard deviation passes
-// q = accel_std * accel_std, computed once per call by the caller.
+// (sigma_a^2), the accel_var_m2ps4 field of every tracker's Params
+// (tracker_params.h).
 #pragma once
 
 #include <Eigen/Core>

@@ -18,7 +18,7 @@
 //   extract   PHD: components with w > extract_threshold;
 //             CPHD: the MAP cardinality's heaviest components.
 // The clutter model is the same object for the three filters (mode chosen
-// by FilterParams::clutter_mode).
+// by RfsFilterParams::clutter_mode).
 //
 // Caps: kMaxComponents = Caps::kMaxMixtureComponents (default 2 kMaxTargets,
 // rfs/rfs_caps.h) after reduction; the update works in
@@ -39,7 +39,7 @@
 #include "mptrack/rfs/filter_common.h"
 #include "mptrack/rfs/log_sum.h"
 #include "mptrack/rfs/mixture.h"
-#include "mptrack/phd/phd_params.h"
+#include "mptrack/rfs/rfs_params.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -54,7 +54,7 @@ class PhdFilter {
 
  public:
   using Scalar = T;
-  using Params = FilterParams<T>;
+  using Params = RfsFilterParams<T>;
   using ScanType = Scan<T, Caps::kMaxMeasurements>;
   using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
   using OutputQueue = StaticVector<Estimate, 1>;
@@ -67,10 +67,18 @@ class PhdFilter {
   static constexpr std::size_t kMaxWork = 2 * kMaxPredicted;
   static constexpr std::size_t kMaxCardinality = Caps::kMaxTargets;
 
-  /// Validates p and resets everything.
+  /// Checks p (RfsFilterParams::validate; no field depends on Caps); on
+  /// failure names the field in *where (validate.h).
+  static Status validate(const Params& p, ParamError* where = nullptr) { return p.validate(where); }
+
+  /// The params of the last successful init().
+  const Params& params() const { return params_; }
+
+  /// Validates p (validate() above) and resets everything.
   Status init(const Params& p) {
+    static_assert(tracker_contract_holds<PhdFilter>());  // tracker_contract.h
     initialized_ = false;
-    MPTRACK_TRY(p.validate());
+    MPTRACK_TRY(validate(p));
     params_ = p;
     model_ = p.measurement_model();
     gate_ = rfs::chi2_gate_2dof(p.gate_probability);
@@ -78,7 +86,7 @@ class PhdFilter {
     reduction_.prune_threshold = p.prune_threshold;
     reduction_.merge_threshold = p.merge_threshold;
     reduction_.merge_threshold_power = p.merge_threshold_power;
-    reduction_.use_power = p.use_amplitude;
+    reduction_.use_power = p.amplitude.use_amplitude;
     reduction_.max_alpha = p.max_alpha;
     components_.clear();
     births_.clear();
@@ -356,7 +364,7 @@ class PhdFilter {
     r.state = c.x;
     r.covariance = c.P;
     r.existence = c.weight < T(1) ? c.weight : T(1);
-    r.snr = params_.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
+    r.snr = params_.amplitude.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
     r.confirmed = true;
     r.measurement_index = c.measurement;
     return e.tracks.push_back(r);
@@ -392,9 +400,15 @@ class PhdFilter {
   OutputQueue outputs_;
 };
 
-template <class T, class Caps = DefaultCaps>
-using GmPhdFilter = PhdFilter<T, Caps, false>;
-template <class T, class Caps = DefaultCaps>
-using GmCphdFilter = PhdFilter<T, Caps, true>;
-
 }  // namespace mptrack::phd
+
+namespace mptrack {
+
+/// GM-PHD filter with amplitude information (seed 001).
+template <class T, class Caps = DefaultCaps>
+using GmPhdFilter = phd::PhdFilter<T, Caps, false>;
+/// GM-CPHD filter with amplitude information (seed 001; Vo, Vo, Cantoni 2007).
+template <class T, class Caps = DefaultCaps>
+using GmCphdFilter = phd::PhdFilter<T, Caps, true>;
+
+}  // namespace mptrack

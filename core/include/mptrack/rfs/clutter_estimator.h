@@ -57,7 +57,7 @@ class ClutterEstimator {
     T rate() const { return rate_shape / rate_scans; }
   };
 
-  Status init(const FilterParams<T>& p) {
+  Status init(const RfsFilterParams<T>& p) {
     params_ = p;
     model_ = p.measurement_model();
     log_volume_ = dmath::dlog(p.region_volume());
@@ -93,7 +93,7 @@ class ClutterEstimator {
   /// measurements flagged valid.
   void evaluate(const Vec2<T>* z, const model::AmplitudeTerms<T>* amp, const bool* valid, std::size_t n) {
     n_ = n;
-    const bool use_amp = params_.use_amplitude;
+    const bool use_amp = params_.amplitude.use_amplitude;
     for (std::size_t i = 0; i < n; ++i) {
       if (!valid[i]) continue;
       LogSum<T> total;
@@ -133,7 +133,7 @@ class ClutterEstimator {
   void update(const Vec2<T>* z, const model::AmplitudeTerms<T>* amp, const bool* valid,
               const T* clutter_prob) {
     if (params_.clutter_mode == ClutterMode::kKnownUniform) return;
-    const bool use_amp = params_.use_amplitude;
+    const bool use_amp = params_.amplitude.use_amplitude;
     for (std::size_t c = 0; c < sources_.size(); ++c) {
       Source& s = sources_[c];
       T sum_r = T(0);
@@ -281,7 +281,7 @@ class ClutterEstimator {
       s.rate_scans = T(1);
       s.power.a = T(1) + s.m0;
       s.power.b = sum_e > T(0) ? sum_e : params_.clutter_scale * s.m0;
-      if (!params_.use_amplitude) s.power = sources_[0].power;
+      if (!params_.amplitude.use_amplitude) s.power = sources_[0].power;
       s.mean = s.m1 / s.m0;
       set_cov(s, s.m2 / s.m0 - s.mean * s.mean.transpose());
       // These points were credited to the uniform source this scan.
@@ -298,7 +298,7 @@ class ClutterEstimator {
     return d0 <= hw0 && d0 >= -hw0 && d1 <= hw1 && d1 >= -hw1;
   }
 
-  FilterParams<T> params_;
+  RfsFilterParams<T> params_;
   MeasurementModel<T> model_;
   T log_volume_ = T(0);
   StaticVector<Source, MaxSources + 1> sources_;

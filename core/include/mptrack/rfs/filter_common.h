@@ -43,15 +43,15 @@ struct MeasurementBatch {
   std::array<bool, MaxMeasurements> valid{};
 
   /// Converts and checks with p.validator() (model/measurement_validator.h:
-  /// finite, inside the region, amplitude > d and <= p.max_amplitude when
+  /// finite, inside the region, amplitude > d and <= max_amplitude when
   /// amplitude is used, > 0 otherwise), and the clutter term a^(2b) <=
-  /// FilterParams::kMaxAmplitudeTerm (docs/reliability.md F4: larger values
+  /// RfsFilterParams::kMaxAmplitudeTerm (docs/reliability.md F4: larger values
   /// overflow the amplitude moments). Exact duplicates of a valid earlier
   /// measurement are flagged too and counted in `duplicate` (measurement.h,
   /// F11). Invalid ones stay in place (flag false) so measurement indices
   /// keep their meaning.
   template <std::size_t N>
-  void load(const Scan<T, N>& scan, const FilterParams<T>& p, const MeasurementModel<T>& mm) {
+  void load(const Scan<T, N>& scan, const RfsFilterParams<T>& p, const MeasurementModel<T>& mm) {
     static_assert(N <= MaxMeasurements, "batch smaller than the scan");
     n = scan.measurements.size();
     invalid = 0;
@@ -69,9 +69,11 @@ struct MeasurementBatch {
         ++invalid;
         continue;
       }
-      amp[i] = p.use_amplitude ? model::amplitude_terms(y.amplitude, p.threshold, p.weibull_shape)
-                               : AmplitudeTerms<T>{};
-      if (p.use_amplitude && !(amp[i].clutter_excess <= FilterParams<T>::kMaxAmplitudeTerm)) {
+      amp[i] = p.amplitude.use_amplitude
+                   ? model::amplitude_terms(y.amplitude, p.amplitude.threshold, p.weibull_shape)
+                   : AmplitudeTerms<T>{};
+      if (p.amplitude.use_amplitude &&
+          !(amp[i].clutter_excess <= RfsFilterParams<T>::kMaxAmplitudeTerm)) {
         valid[i] = false;  // a^(2b) too large for this Weibull shape b
         ++invalid;
       } else if (is_duplicate(scan, i, [this](std::size_t k) { return valid[k]; })) {
@@ -106,15 +108,16 @@ T clamp_probability(T p) {
 /// Returns true if a covariance needed repair.
 template <class T>
 bool linearize_component(const TargetComponent<T>& c, const MeasurementModel<T>& mm,
-                         const FilterParams<T>& p, Linearized<T>& out) {
+                         const RfsFilterParams<T>& p, Linearized<T>& out) {
   Mat24<T> H;
   mm.linearize(c.x, out.z_hat, H);
   const Eigen::Matrix<T, 4, 2> PHt = c.P * H.transpose();
   Mat2<T> S = H * PHt + mm.R;
   model::symmetrize(S);
   out.ok = invert_spd2(S, out.S_inv, out.log_det);
-  const T pd = p.use_amplitude ? model::target_detection_probability(c.power, p.threshold, p.swerling_order)
-                               : p.detection_prob;
+  const T pd = p.amplitude.use_amplitude
+                   ? model::target_detection_probability(c.power, p.amplitude.threshold, p.amplitude.order())
+                   : p.detection_prob;
   out.pd = clamp_probability(pd);
   out.log_pd = dmath::dlog(out.pd);
   if (!out.ok) return false;
@@ -129,13 +132,15 @@ bool linearize_component(const TargetComponent<T>& c, const MeasurementModel<T>&
 template <class T, std::size_t M>
 bool log_detection_likelihood(const TargetComponent<T>& c, const Linearized<T>& lin,
                               const MeasurementBatch<T, M>& batch, std::size_t i,
-                              const MeasurementModel<T>& mm, const FilterParams<T>& p, T gate,
+                              const MeasurementModel<T>& mm, const RfsFilterParams<T>& p, T gate,
                               Vec2<T>& v, T& log_q) {
   if (!lin.ok) return false;
   v = mm.residual(batch.z[i], lin.z_hat);
   if (mahalanobis2(v, lin.S_inv) > gate) return false;
   log_q = lin.log_pd + log_gauss2(v, lin.S_inv, lin.log_det);
-  if (p.use_amplitude) log_q += model::log_target_amplitude(c.power, batch.amp[i], p.swerling_order);
+  if (p.amplitude.use_amplitude) {
+    log_q += model::log_target_amplitude(c.power, batch.amp[i], p.amplitude.order());
+  }
   return true;
 }
 
@@ -143,27 +148,27 @@ bool log_detection_likelihood(const TargetComponent<T>& c, const Linearized<T>& 
 template <class T, std::size_t M>
 TargetComponent<T> updated_component(const TargetComponent<T>& c, const Linearized<T>& lin,
                                      const MeasurementBatch<T, M>& batch, std::size_t i,
-                                     const Vec2<T>& v, const FilterParams<T>& p) {
+                                     const Vec2<T>& v, const RfsFilterParams<T>& p) {
   TargetComponent<T> u = c;
   u.x = c.x + lin.K * v;
   u.P = lin.P_post;
-  if (p.use_amplitude) model::ig_update_target(u.power, batch.amp[i], p.swerling_order);
+  if (p.amplitude.use_amplitude) model::ig_update_target(u.power, batch.amp[i], p.amplitude.order());
   u.measurement = static_cast<std::int32_t>(i);
   return u;
 }
 
 /// Prediction of one component over dt [s]: CV kinematics, power forgetting.
 template <class T>
-void predict_component(TargetComponent<T>& c, const FilterParams<T>& p, T dt) {
-  model::cv_predict(c.x, c.P, dt, p.accel_std_mps2 * p.accel_std_mps2);
-  if (p.use_amplitude) model::forget_clamped(c.power, p.power_forgetting, p.min_alpha);
+void predict_component(TargetComponent<T>& c, const RfsFilterParams<T>& p, T dt) {
+  model::cv_predict(c.x, c.P, dt, p.accel_var_m2ps4);
+  if (p.amplitude.use_amplitude) model::forget_clamped(c.power, p.power_forgetting, p.min_alpha);
   c.measurement = -1;
 }
 
 /// Birth component on measurement z (see the file comment).
 template <class T>
 TargetComponent<T> birth_component(const Vec2<T>& z, T weight, std::uint32_t label,
-                                   const MeasurementModel<T>& mm, const FilterParams<T>& p) {
+                                   const MeasurementModel<T>& mm, const RfsFilterParams<T>& p) {
   TargetComponent<T> b;
   Vec2<T> pos;
   Mat2<T> cov;

@@ -18,13 +18,9 @@
 #include "mptrack/measurement.h"
 #include "mptrack/model/mahalanobis.h"
 #include "mptrack/model/polar_measurement.h"
+#include "mptrack/tracker_params.h"
 
 namespace mptrack::rfs {
-
-enum class MeasurementSpace : std::uint8_t {
-  kPolar,      ///< z = (range m, azimuth rad), R = diag(sigma_r^2, sigma_az^2)
-  kCartesian,  ///< z = (x m, y m), R = sigma_xy^2 I
-};
 
 template <class T>
 using Vec2 = Eigen::Matrix<T, 2, 1>;

@@ -1,34 +1,37 @@
 // Run-time parameters of the IGGM baselines (GM-PHD, GM-CPHD, CBMeMBer;
 // seed 001). One struct for the three filters: they share the models, the
 // clutter estimator, births and mixture management. Units in every comment;
-// defaults are seed 001 section 6 where the paper gives a value, [impl]
-// otherwise. validate() is called once by each filter's init().
+// defaults are seed 001 Sec. 5 where the paper gives a value, ours
+// otherwise (docs/algorithms/gm-phd.md §Departures from the paper). The
+// region, noise and amplitude blocks, accel_var_m2ps4, clutter_mode and
+// max_gap_s use the names shared by every tracker (tracker_params.h).
+// Each filter's static validate() runs validate() once, in init().
 #pragma once
 
 #include <cstdint>
 
-#include "mptrack/model/clutter_mode.h"
+#include "mptrack/math/constants.h"
 #include "mptrack/model/measurement_validator.h"
 #include "mptrack/rfs/measurement_model.h"
 #include "mptrack/status.h"
+#include "mptrack/tracker_params.h"
 #include "mptrack/validate.h"
 
-namespace mptrack::rfs {
+namespace mptrack {
 
-/// How clutter is handled (model/clutter_mode.h). The IGGM filters
-/// implement kEstimatedMap (default), kEstimatedUniform and kKnownUniform.
-using ClutterMode = model::ClutterMode;
-
+/// Parameters of GmPhdFilter, GmCphdFilter and CbMemberFilter. Clutter
+/// modes implemented: kEstimatedMap (default), kEstimatedUniform and
+/// kKnownUniform (model/clutter_mode.h).
 template <class T>
-struct FilterParams {
+struct RfsFilterParams {
   // --- sensor ---
+  /// Polar: (range, azimuth) measurements, region and noise below.
+  /// Cartesian: (x, y) measurements, cartesian_region and cartesian_std_m.
   MeasurementSpace space = MeasurementSpace::kCartesian;
-  T sigma_r_m = T(10);           ///< polar range noise std [m] (Cartesian: x/y noise std [m])
-  T sigma_az_rad = T(0.0104720); ///< polar azimuth noise std [rad]; unused for Cartesian
-  T region_min0 = T(-1000);      ///< region, first coordinate: range [m] or x [m]
-  T region_max0 = T(1000);
-  T region_min1 = T(-1000);      ///< region, second coordinate: azimuth [rad] or y [m]
-  T region_max1 = T(1000);
+  PolarRegion<T> region{T(0), T(1000), -dmath::kPi<T>, dmath::kPi<T>};  ///< kPolar only
+  PolarNoise<T> noise{T(10), T(0.0104720), T(1)};  ///< kPolar only; Doppler unused
+  CartesianRegion<T> cartesian_region{T(-1000), T(1000), T(-1000), T(1000)};  ///< kCartesian only
+  T cartesian_std_m = T(10);     ///< x and y noise std [m], kCartesian only, in [1e-3, 1e5]
   T scan_period_s = T(1);        ///< nominal T [s]; the real dt comes from time_us
   /// A scan more than this after the previous one drops the whole target
   /// mixture and the pending births (counted in gap_resets) and starts a
@@ -36,28 +39,31 @@ struct FilterParams {
   T max_gap_s = T(60);
 
   // --- targets ---
-  T accel_std_mps2 = T(5);       ///< CV white-acceleration std sigma_nu [m/s^2] (spec 1.1)
-  T survival_prob = T(0.99);     ///< p_S^t (spec 1.1)
+  /// CV white-acceleration variance q = sigma_nu^2 per axis [m^2/s^4]
+  /// (seed 001 Sec. 5: sigma_nu = 5 m/s^2; docs/algorithms/models.md §CV motion model).
+  T accel_var_m2ps4 = T(25);
+  T survival_prob = T(0.99);     ///< p_S^t (seed 001 Sec. 5)
   T birth_rate = T(0.2);         ///< expected births per scan, spread over last scan's measurements [-]
-  T birth_velocity_std_mps = T(30);  ///< velocity std of a birth component [m/s] [impl]
+  /// Velocity std of a birth component [m/s] (our choice:
+  /// docs/algorithms/gm-phd.md §Departures from the paper).
+  T birth_velocity_std_mps = T(30);
 
   // --- amplitude ---
-  bool use_amplitude = true;     ///< false: kinematics-only variant (amplitude ignored)
-  T threshold = T(1.5174);       ///< amplitude threshold d, normalised [-] (seed 001: 2.146/sqrt(2))
-  int swerling_order = 1;        ///< n: 1 (Swerling I) or 2 (Swerling III)
+  /// use_amplitude false: kinematics-only variant (amplitude ignored);
+  /// threshold d normalised (seed 001: 2.146/sqrt(2)); Swerling I.
+  /// max_amplitude (docs/reliability.md F4): a measurement with a larger
+  /// normalised amplitude is rejected and counted in measurements_invalid,
+  /// as is one whose clutter term a^(2b) exceeds kMaxAmplitudeTerm. 1e4 is
+  /// 80 dB above the noise floor, beyond any unsaturated receiver; the
+  /// ceiling keeps the amplitude moments (a^2, a^(2b), summed with
+  /// forgetting) finite in float.
+  AmplitudeModel<T> amplitude{true, T(1.5174), T(1e4), 1};
   T target_power_prior = T(101); ///< prior mean of varsigma = 1 + SNR at birth [-]
-  T target_alpha_prior = T(3);   ///< prior IG shape at birth (spec 9, item 4) [-]
-  T power_forgetting = T(1.1);   ///< v of spec 1.3, targets and clutter [-] (> 1)
-  T min_alpha = T(2.01);         ///< shape clamp (spec 1.3 [impl]) [-]
+  T target_alpha_prior = T(3);   ///< prior IG shape at birth (docs/algorithms/gm-phd.md §Births) [-]
+  T power_forgetting = T(1.1);   ///< v of seed 001 eq. (50), targets and clutter [-] (> 1)
+  T min_alpha = T(2.01);         ///< shape clamp (docs/algorithms/models.md §Inverse-gamma power belief) [-]
   T max_alpha = T(1e4);          ///< cap after merges [-]
-  T detection_prob = T(0.9775);  ///< P_D when use_amplitude = false [-]
-  /// Amplitude ceiling [-] (docs/reliability.md F4): a measurement with a
-  /// larger normalised amplitude is rejected and counted in
-  /// measurements_invalid, as is one whose clutter term a^(2b) exceeds
-  /// kMaxAmplitudeTerm. 1e4 is 80 dB above the noise floor, beyond any
-  /// unsaturated receiver; the ceiling keeps the amplitude moments
-  /// (a^2, a^(2b), summed with forgetting) finite in float.
-  T max_amplitude = T(1e4);
+  T detection_prob = T(0.9775);  ///< P_D when amplitude.use_amplitude = false [-]
 
   // --- clutter ---
   ClutterMode clutter_mode = ClutterMode::kEstimatedMap;
@@ -71,7 +77,7 @@ struct FilterParams {
   int hotspot_min_points = 5;    ///< measurements in one box needed to seed a source [-]
   T hotspot_min_rate = T(0.5);   ///< a source whose rate falls below this is deleted [1/scan]
 
-  // --- mixture management (spec 5.5) ---
+  // --- mixture management (docs/algorithms/gm-phd.md §Mixture reduction) ---
   T prune_threshold = T(1e-5);   ///< drop components below this weight [-]
   T merge_threshold = T(4);      ///< Mahalanobis^2 merge gate on the kinematics, U [-]
   T merge_threshold_power = T(4);///< symmetric-KL merge gate on the IG part, U_sigma [-]
@@ -85,94 +91,69 @@ struct FilterParams {
   // --- bounds (docs/reliability.md F10, F12) ---
   // Each std is squared, and polar azimuth std is multiplied by the range
   // (position_of: (r sigma_az)^2), in float; the region volume divides the
-  // clutter rate. The bounds keep these, and the derived clutter intensity
-  // rate / V, finite and normal in float, and a polar covariance of
-  // condition number <= kMaxStdRatio^2 = 1e6 (float epsilon 6e-8).
-  static constexpr T kMaxCoordM = T(1e7);       ///< |region bound| in metres [m] (10 000 km)
-  static constexpr T kMaxAzimuthRad = T(6.2831853);  ///< |polar azimuth bound| [rad] (2 pi)
-  static constexpr T kMinStdM = T(1e-3);        ///< sigma_r_m floor [m]
-  static constexpr T kMaxStdM = T(1e5);         ///< sigma_r_m ceiling [m]
-  static constexpr T kMinStdRad = T(1e-6);      ///< polar sigma_az_rad floor [rad]
-  static constexpr T kMaxStdRad = T(1);         ///< polar sigma_az_rad ceiling [rad]
-  static constexpr T kMaxStdRatio = T(1e3);     ///< polar: region_max0 sigma_az / sigma_r [-]
+  // clutter rate. The bounds (these and the blocks' in tracker_params.h)
+  // keep these, and the derived clutter intensity rate / V, finite and
+  // normal in float, and a polar covariance of condition number
+  // <= kMaxStdRatio^2 = 1e6 (float epsilon 6e-8).
+  static constexpr T kMaxCoordM = kMaxRegionCoordM<T>;  ///< |region bound| in metres [m]
+  static constexpr T kMinStdM = T(1e-3);        ///< cartesian_std_m floor [m]
+  static constexpr T kMaxStdM = T(1e5);         ///< cartesian_std_m ceiling [m]
+  static constexpr T kMaxStdRatio = T(1e3);     ///< polar: region.range_max_m azimuth std / range std [-]
   static constexpr T kMinVolume = T(1e-6);      ///< region volume floor [m rad | m^2]
+  static constexpr T kMaxAccelVar = T(1e6);     ///< accel_var_m2ps4 ceiling [m^2/s^4]
   static constexpr T kMaxVelocityStdMps = T(1e4);  ///< birth velocity std ceiling [m/s] (floor 1e-3)
   static constexpr T kMaxRate = T(1e6);         ///< rates and counts ceiling [1/scan]
   static constexpr T kMaxPower = T(1e12);       ///< power / scale / shape-prior ceiling [-]
-  static constexpr T kMaxAmplitudeTerm = T(1e20);  ///< a^(2b) ceiling [-] (see max_amplitude)
+  static constexpr T kMaxAmplitude = T(1e6);    ///< amplitude.max_amplitude ceiling [-]
+  static constexpr T kMaxAmplitudeTerm = T(1e20);  ///< a^(2b) ceiling [-] (see amplitude)
 
-  /// kInvalidArgument on any out-of-range field.
-  Status validate() const {
-    MPTRACK_TRY(check(space == MeasurementSpace::kPolar || space == MeasurementSpace::kCartesian));
-    MPTRACK_TRY(check_range(sigma_r_m, kMinStdM, kMaxStdM));
-    if (space == MeasurementSpace::kPolar) {
-      MPTRACK_TRY(check_range(sigma_az_rad, kMinStdRad, kMaxStdRad));
-    } else {
-      MPTRACK_TRY(check_positive(sigma_az_rad));  // unused
-    }
-    MPTRACK_TRY(check(region_max0 > region_min0 && region_max1 > region_min1));
-    MPTRACK_TRY(check_range(region_min0, -kMaxCoordM, kMaxCoordM));
-    MPTRACK_TRY(check_range(region_max0, -kMaxCoordM, kMaxCoordM));
-    if (space == MeasurementSpace::kPolar) {
-      MPTRACK_TRY(check(!(region_min0 < T(0))));  // a range
-      MPTRACK_TRY(check_range(region_min1, -kMaxAzimuthRad, kMaxAzimuthRad));
-      MPTRACK_TRY(check_range(region_max1, -kMaxAzimuthRad, kMaxAzimuthRad));
-      MPTRACK_TRY(check(!(region_max0 * sigma_az_rad > kMaxStdRatio * sigma_r_m)));
-    } else {
-      MPTRACK_TRY(check_range(region_min1, -kMaxCoordM, kMaxCoordM));
-      MPTRACK_TRY(check_range(region_max1, -kMaxCoordM, kMaxCoordM));
-    }
-    MPTRACK_TRY(check(region_volume() >= kMinVolume && is_finite(region_volume())));
-    MPTRACK_TRY(check_positive(scan_period_s));
-    MPTRACK_TRY(check(!(scan_period_s > T(3600))));
-    MPTRACK_TRY(check_range(max_gap_s, T(1e-3), T(1e6)));
-    MPTRACK_TRY(check_positive(accel_std_mps2));
-    MPTRACK_TRY(check(!(accel_std_mps2 > T(1e3))));
-    MPTRACK_TRY(check_open_probability(survival_prob));
-    MPTRACK_TRY(check_range(birth_rate, T(1e-6), kMaxRate));
-    MPTRACK_TRY(check_range(birth_velocity_std_mps, T(1e-3), kMaxVelocityStdMps));
-    MPTRACK_TRY(check_positive(threshold));
-    MPTRACK_TRY(check(max_amplitude > threshold && !(max_amplitude > T(1e6))));
-    MPTRACK_TRY(check(swerling_order == 1 || swerling_order == 2));
-    MPTRACK_TRY(check(target_power_prior > T(1) && !(target_power_prior > kMaxPower)));
-    MPTRACK_TRY(check(target_alpha_prior > T(1) && !(target_alpha_prior > kMaxPower)));
-    MPTRACK_TRY(check(power_forgetting > T(1) && power_forgetting < T(10)));
-    MPTRACK_TRY(check_range(min_alpha, T(1.001), T(100)));
-    MPTRACK_TRY(check(max_alpha > min_alpha && !(max_alpha > kMaxPower)));
-    MPTRACK_TRY(check_open_probability(detection_prob));
-    MPTRACK_TRY(check(clutter_mode == ClutterMode::kEstimatedMap ||
-                      clutter_mode == ClutterMode::kEstimatedUniform ||
-                      clutter_mode == ClutterMode::kKnownUniform));
-    MPTRACK_TRY(check_range(clutter_rate, T(1e-6), kMaxRate));
-    MPTRACK_TRY(check_range(weibull_shape, T(0.1), T(5)));
-    MPTRACK_TRY(check_range(clutter_scale, T(1e-6), kMaxPower));
-    MPTRACK_TRY(check(clutter_forgetting > T(1) && clutter_forgetting < T(10)));
-    MPTRACK_TRY(check(clutter_alpha_prior > T(1) && !(clutter_alpha_prior > kMaxPower)));
-    MPTRACK_TRY(check(hotspot_half_width0 > T(0) && !(hotspot_half_width0 > kMaxCoordM)));
-    MPTRACK_TRY(check(hotspot_half_width1 > T(0) && !(hotspot_half_width1 > kMaxCoordM)));
-    MPTRACK_TRY(check(hotspot_min_points >= 2 && hotspot_min_points <= 1000));
-    MPTRACK_TRY(check(hotspot_min_rate > T(0) && !(hotspot_min_rate > kMaxRate)));
-    MPTRACK_TRY(check_open_probability(prune_threshold));
-    MPTRACK_TRY(check(merge_threshold > T(0) && !(merge_threshold > kMaxRate)));
-    MPTRACK_TRY(check(merge_threshold_power > T(0) && !(merge_threshold_power > kMaxRate)));
-    MPTRACK_TRY(check_open_probability(gate_probability));
-    MPTRACK_TRY(check_open_probability(extract_threshold));
-    MPTRACK_TRY(check_open_probability(existence_prune));
-    MPTRACK_TRY(check_open_probability(existence_extract));
+  /// On the first out-of-range field names it in *where (if given) and
+  /// returns kInvalidArgument.
+  Status validate(ParamError* where = nullptr) const {
+    ParamError* w = where;
+    MPTRACK_TRY(validate_sensor(w));
+    MPTRACK_CHECK_PARAM(w, "scan_period_s", check_positive(scan_period_s));
+    MPTRACK_CHECK_PARAM(w, "scan_period_s", check(!(scan_period_s > T(3600))));
+    MPTRACK_CHECK_PARAM(w, "max_gap_s", check_range(max_gap_s, T(1e-3), T(1e6)));
+    MPTRACK_CHECK_PARAM(w, "accel_var_m2ps4", check_positive(accel_var_m2ps4));
+    MPTRACK_CHECK_PARAM(w, "accel_var_m2ps4", check(!(accel_var_m2ps4 > kMaxAccelVar)));
+    MPTRACK_CHECK_PARAM(w, "survival_prob", check_open_probability(survival_prob));
+    MPTRACK_CHECK_PARAM(w, "birth_rate", check_range(birth_rate, T(1e-6), kMaxRate));
+    MPTRACK_CHECK_PARAM(w, "birth_velocity_std_mps",
+                        check_range(birth_velocity_std_mps, T(1e-3), kMaxVelocityStdMps));
+    MPTRACK_TRY(amplitude.validate(w));
+    MPTRACK_CHECK_PARAM(w, "amplitude.max_amplitude", check(!(amplitude.max_amplitude > kMaxAmplitude)));
+    MPTRACK_CHECK_PARAM(w, "target_power_prior",
+                        check(target_power_prior > T(1) && !(target_power_prior > kMaxPower)));
+    MPTRACK_CHECK_PARAM(w, "target_alpha_prior",
+                        check(target_alpha_prior > T(1) && !(target_alpha_prior > kMaxPower)));
+    MPTRACK_CHECK_PARAM(w, "power_forgetting", check(power_forgetting > T(1) && power_forgetting < T(10)));
+    MPTRACK_CHECK_PARAM(w, "min_alpha", check_range(min_alpha, T(1.001), T(100)));
+    MPTRACK_CHECK_PARAM(w, "max_alpha", check(max_alpha > min_alpha && !(max_alpha > kMaxPower)));
+    MPTRACK_CHECK_PARAM(w, "detection_prob", check_open_probability(detection_prob));
+    MPTRACK_TRY(validate_clutter(w));
+    MPTRACK_CHECK_PARAM(w, "prune_threshold", check_open_probability(prune_threshold));
+    MPTRACK_CHECK_PARAM(w, "merge_threshold", check(merge_threshold > T(0) && !(merge_threshold > kMaxRate)));
+    MPTRACK_CHECK_PARAM(w, "merge_threshold_power",
+                        check(merge_threshold_power > T(0) && !(merge_threshold_power > kMaxRate)));
+    MPTRACK_CHECK_PARAM(w, "gate_probability", check_open_probability(gate_probability));
+    MPTRACK_CHECK_PARAM(w, "extract_threshold", check_open_probability(extract_threshold));
+    MPTRACK_CHECK_PARAM(w, "existence_prune", check_open_probability(existence_prune));
+    MPTRACK_CHECK_PARAM(w, "existence_extract", check_open_probability(existence_extract));
     return Status::kOk;
   }
 
   /// Measurement model built from the sensor fields.
-  MeasurementModel<T> measurement_model() const {
-    MeasurementModel<T> mm;
+  rfs::MeasurementModel<T> measurement_model() const {
+    rfs::MeasurementModel<T> mm;
     mm.space = space;
     mm.R.setZero();
     if (space == MeasurementSpace::kPolar) {
-      mm.R(0, 0) = sigma_r_m * sigma_r_m;
-      mm.R(1, 1) = sigma_az_rad * sigma_az_rad;
+      mm.R(0, 0) = noise.range_std_m * noise.range_std_m;
+      mm.R(1, 1) = noise.azimuth_std_rad * noise.azimuth_std_rad;
     } else {
-      mm.R(0, 0) = sigma_r_m * sigma_r_m;
-      mm.R(1, 1) = sigma_r_m * sigma_r_m;
+      mm.R(0, 0) = cartesian_std_m * cartesian_std_m;
+      mm.R(1, 1) = cartesian_std_m * cartesian_std_m;
     }
     return mm;
   }
@@ -181,18 +162,69 @@ struct FilterParams {
   /// measurement coordinates; amplitude thresholded when it is used.
   model::MeasurementValidator<T> validator() const {
     model::MeasurementValidator<T> v;
-    v.min0 = region_min0;
-    v.max0 = region_max0;
-    v.min1 = region_min1;
-    v.max1 = region_max1;
-    v.amplitude = use_amplitude ? model::AmplitudeRule::kThresholded : model::AmplitudeRule::kPositive;
-    v.threshold = threshold;
-    v.max_amplitude = max_amplitude;
+    if (space == MeasurementSpace::kPolar) {
+      v.min0 = region.range_min_m;
+      v.max0 = region.range_max_m;
+      v.min1 = region.azimuth_min_rad;
+      v.max1 = region.azimuth_max_rad;
+    } else {
+      v.min0 = cartesian_region.x_min_m;
+      v.max0 = cartesian_region.x_max_m;
+      v.min1 = cartesian_region.y_min_m;
+      v.max1 = cartesian_region.y_max_m;
+    }
+    v.amplitude = amplitude.use_amplitude ? model::AmplitudeRule::kThresholded : model::AmplitudeRule::kPositive;
+    v.threshold = amplitude.threshold;
+    v.max_amplitude = amplitude.max_amplitude;
     return v;
   }
 
-  /// Measurement-space volume of the region [m rad | m^2].
-  T region_volume() const { return (region_max0 - region_min0) * (region_max1 - region_min1); }
+  /// Measurement-space volume of the active region [m rad | m^2].
+  T region_volume() const {
+    return space == MeasurementSpace::kPolar ? region.volume() : cartesian_region.volume();
+  }
+
+ private:
+  /// The active space's region and noise.
+  Status validate_sensor(ParamError* w) const {
+    MPTRACK_CHECK_PARAM(w, "space", check(space == MeasurementSpace::kPolar ||
+                                          space == MeasurementSpace::kCartesian));
+    if (space == MeasurementSpace::kPolar) {
+      MPTRACK_TRY(noise.validate(w));
+      MPTRACK_TRY(region.validate(w));
+      MPTRACK_CHECK_PARAM(w, "noise.azimuth_std_rad",
+                          check(!(region.range_max_m * noise.azimuth_std_rad >
+                                  kMaxStdRatio * noise.range_std_m)));
+      MPTRACK_CHECK_PARAM(w, "region", check(region_volume() >= kMinVolume && is_finite(region_volume())));
+    } else {
+      MPTRACK_CHECK_PARAM(w, "cartesian_std_m", check_range(cartesian_std_m, kMinStdM, kMaxStdM));
+      MPTRACK_TRY(cartesian_region.validate(w));
+      MPTRACK_CHECK_PARAM(w, "cartesian_region",
+                          check(region_volume() >= kMinVolume && is_finite(region_volume())));
+    }
+    return Status::kOk;
+  }
+
+  Status validate_clutter(ParamError* w) const {
+    MPTRACK_CHECK_PARAM(w, "clutter_mode", check(clutter_mode == ClutterMode::kEstimatedMap ||
+                                                 clutter_mode == ClutterMode::kEstimatedUniform ||
+                                                 clutter_mode == ClutterMode::kKnownUniform));
+    MPTRACK_CHECK_PARAM(w, "clutter_rate", check_range(clutter_rate, T(1e-6), kMaxRate));
+    MPTRACK_CHECK_PARAM(w, "weibull_shape", check_range(weibull_shape, T(0.1), T(5)));
+    MPTRACK_CHECK_PARAM(w, "clutter_scale", check_range(clutter_scale, T(1e-6), kMaxPower));
+    MPTRACK_CHECK_PARAM(w, "clutter_forgetting",
+                        check(clutter_forgetting > T(1) && clutter_forgetting < T(10)));
+    MPTRACK_CHECK_PARAM(w, "clutter_alpha_prior",
+                        check(clutter_alpha_prior > T(1) && !(clutter_alpha_prior > kMaxPower)));
+    MPTRACK_CHECK_PARAM(w, "hotspot_half_width0",
+                        check(hotspot_half_width0 > T(0) && !(hotspot_half_width0 > kMaxCoordM)));
+    MPTRACK_CHECK_PARAM(w, "hotspot_half_width1",
+                        check(hotspot_half_width1 > T(0) && !(hotspot_half_width1 > kMaxCoordM)));
+    MPTRACK_CHECK_PARAM(w, "hotspot_min_points", check(hotspot_min_points >= 2 && hotspot_min_points <= 1000));
+    MPTRACK_CHECK_PARAM(w, "hotspot_min_rate",
+                        check(hotspot_min_rate > T(0) && !(hotspot_min_rate > kMaxRate)));
+    return Status::kOk;
+  }
 };
 
-}  // namespace mptrack::rfs
+}  // namespace mptrack
