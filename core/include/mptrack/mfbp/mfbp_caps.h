@@ -6,39 +6,20 @@
 // seed 000 eqs. (99)-(102) runs on them), the clutter-seeding grid and the
 // ranked two-point birth candidates (docs/algorithms/mfbp.md §Birth). A
 // user caps type written before they existed still compiles: the accessors
-// below (C++17 detection idiom) fall back to the values of the presets.
+// below (MPTRACK_OPTIONAL_CAP, caps.h) fall back to the values of the presets.
 #pragma once
 
 #include <cstddef>
 #include <type_traits>
 
+#include "mptrack/caps.h"
 
 namespace mptrack::mfbp {
 
 namespace detail {
-
-inline constexpr std::size_t kDefaultGatePairs = 8;
-inline constexpr std::size_t kDefaultClutterGridCells = 512;
-inline constexpr std::size_t kDefaultBirthCandidates = 32;
-
-template <class Caps, class = void>
-struct GatePairsOf : std::integral_constant<std::size_t, kDefaultGatePairs> {};
-template <class Caps>
-struct GatePairsOf<Caps, std::void_t<decltype(Caps::kMaxGatePairs)>>
-    : std::integral_constant<std::size_t, Caps::kMaxGatePairs> {};
-
-template <class Caps, class = void>
-struct ClutterGridCellsOf : std::integral_constant<std::size_t, kDefaultClutterGridCells> {};
-template <class Caps>
-struct ClutterGridCellsOf<Caps, std::void_t<decltype(Caps::kMaxClutterGridCells)>>
-    : std::integral_constant<std::size_t, Caps::kMaxClutterGridCells> {};
-
-template <class Caps, class = void>
-struct BirthCandidatesOf : std::integral_constant<std::size_t, kDefaultBirthCandidates> {};
-template <class Caps>
-struct BirthCandidatesOf<Caps, std::void_t<decltype(Caps::kMaxBirthCandidates)>>
-    : std::integral_constant<std::size_t, Caps::kMaxBirthCandidates> {};
-
+MPTRACK_OPTIONAL_CAP(GatePairsOf, kMaxGatePairs, 8);
+MPTRACK_OPTIONAL_CAP(ClutterGridCellsOf, kMaxClutterGridCells, 512);
+MPTRACK_OPTIONAL_CAP(BirthCandidatesOf, kMaxBirthCandidates, 32);
 }  // namespace detail
 
 /// Gated measurements kept per track and scan (Caps::kMaxGatePairs, default 8).

@@ -35,116 +35,32 @@
 #include "mptrack/rfs/rfs_caps.h"
 #include "mptrack/measurement.h"
 #include "mptrack/phd/cardinality.h"
-#include "mptrack/rfs/clutter_estimator.h"
 #include "mptrack/rfs/filter_common.h"
+#include "mptrack/rfs/gm_filter_frame.h"
 #include "mptrack/rfs/log_sum.h"
 #include "mptrack/rfs/mixture.h"
-#include "mptrack/rfs/rfs_params.h"
-#include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
-#include "mptrack/tracker_contract.h"
 
 namespace mptrack::phd {
 
 template <class T, class Caps, bool Cardinalized>
-class PhdFilter {
-  static_assert(caps_are_valid<Caps>(), "invalid caps");
+class PhdFilter : public rfs::GmFilterFrame<PhdFilter<T, Caps, Cardinalized>, T, Caps> {
+  using Frame = rfs::GmFilterFrame<PhdFilter<T, Caps, Cardinalized>, T, Caps>;
+  friend Frame;
 
  public:
-  using Scalar = T;
-  using Params = RfsFilterParams<T>;
-  using ScanType = Scan<T, Caps::kMaxMeasurements>;
-  using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
-  using OutputQueue = StaticVector<Estimate, 1>;
+  using Params = typename Frame::Params;
+  using Estimate = typename Frame::Estimate;
   using Component = rfs::TargetComponent<T>;
 
   static constexpr std::size_t kMaxMeasurements = Caps::kMaxMeasurements;
-  static_assert(rfs::rfs_caps_are_valid<Caps>());
   static constexpr std::size_t kMaxComponents = rfs::kMaxMixtureComponents<Caps>;
   static constexpr std::size_t kMaxPredicted = kMaxComponents + Caps::kMaxMeasurements;
   static constexpr std::size_t kMaxWork = 2 * kMaxPredicted;
   static constexpr std::size_t kMaxCardinality = Caps::kMaxTargets;
 
-  /// Checks p (RfsFilterParams::validate; no field depends on Caps); on
-  /// failure names the field in *where (validate.h).
-  static Status validate(const Params& p, ParamError* where = nullptr) { return p.validate(where); }
-
-  /// The params of the last successful init().
-  const Params& params() const { return params_; }
-
-  /// Validates p (validate() above) and resets everything.
-  Status init(const Params& p) {
-    static_assert(tracker_contract_holds<PhdFilter>());  // tracker_contract.h
-    initialized_ = false;
-    MPTRACK_TRY(validate(p));
-    params_ = p;
-    model_ = p.measurement_model();
-    gate_ = rfs::chi2_gate_2dof(p.gate_probability);
-    MPTRACK_TRY(clutter_.init(p));
-    reduction_.prune_threshold = p.prune_threshold;
-    reduction_.merge_threshold = p.merge_threshold;
-    reduction_.merge_threshold_power = p.merge_threshold_power;
-    reduction_.use_power = p.amplitude.use_amplitude;
-    reduction_.max_alpha = p.max_alpha;
-    components_.clear();
-    births_.clear();
-    outputs_.clear();
-    counters_ = TrackerCounters{};
-    cardinality_.init();
-    next_label_ = 1;
-    scan_index_ = 0;
-    clock_.reset();
-    clock_.set_max_gap_s(p.max_gap_s);
-    initialized_ = true;
-    return Status::kOk;
-  }
-
-  /// Predict + update with one scan. kPartial if some measurements were
-  /// rejected (counted); kCapacityExceeded if a mixture cap dropped mass.
-  Status step(const ScanType& scan) {
-    outputs_.clear();
-    MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
-    if (clock_.gap_exceeded(scan.time_us)) {  // max-gap rule (scan_clock.h, F1)
-      ++counters_.gap_resets;
-      components_.clear();
-      births_.clear();
-      cardinality_.init();
-      clock_.restart();
-    }
-    const T dt = clock_.elapsed_s(scan.time_us, params_.scan_period_s);
-    clock_.advance(scan.time_us);
-    ++counters_.scans;
-    counters_.measurements_in += scan.measurements.size();
-    batch_.load(scan, params_, model_);
-    counters_.measurements_invalid += batch_.invalid;
-    counters_.measurements_duplicate += batch_.duplicate;
-    const std::uint64_t caps_before = total_cap_hits(counters_);
-
-    predict(dt);
-    clutter_.evaluate(batch_.z.data(), batch_.amp.data(), batch_.valid.data(), batch_.n);
-    update();
-    clutter_.update(batch_.z.data(), batch_.amp.data(), batch_.valid.data(), clutter_prob_.data());
-    counters_.clutter_born = clutter_.born();
-    counters_.clutter_deleted = clutter_.deleted();
-    counters_.clutter_cap_hits = clutter_.cap_hits();
-    counters_.track_cap_hits +=
-        rfs::reduce_mixture(work_, components_, reduction_, scratch_, counters_.numerical_repairs);
-    make_births();
-    extract(scan.time_us);
-    ++scan_index_;
-    return accepted_status(counters_, caps_before, batch_.invalid + batch_.duplicate > 0);
-  }
-
-  /// Online filter: nothing is held back.
-  Status flush() {
-    outputs_.clear();
-    return initialized_ ? Status::kOk : Status::kNotInitialized;
-  }
-
-  const OutputQueue& outputs() const { return outputs_; }
-  const TrackerCounters& counters() const { return counters_; }
   const StaticVector<Component, kMaxComponents>& components() const { return components_; }
   /// Expected number of targets: sum of weights (PHD) or mean cardinality (CPHD).
   T expected_targets() const {
@@ -154,11 +70,20 @@ class PhdFilter {
     return s;
   }
   const Cardinality<T, kMaxCardinality>& cardinality() const { return cardinality_; }
-  const rfs::ClutterEstimator<T, kMaxMeasurements, Caps::kMaxClutterComponents>& clutter() const {
-    return clutter_;
-  }
 
  private:
+  // Frame hooks (gm_filter_frame.h).
+  void reset_targets() {
+    components_.clear();
+    births_.clear();
+    cardinality_.init();
+  }
+
+  void reduce() {
+    counters_.track_cap_hits +=
+        rfs::reduce_mixture(work_, components_, reduction_, scratch_, counters_.numerical_repairs);
+  }
+
   void predict(T dt) {
     predicted_.clear();
     T birth_mass = T(0);
@@ -370,15 +295,17 @@ class PhdFilter {
     return e.tracks.push_back(r);
   }
 
-  Params params_;
-  rfs::MeasurementModel<T> model_;
-  rfs::ReductionSettings<T> reduction_;
-  T gate_ = T(0);
-  bool initialized_ = false;
-  ScanClock clock_;
-  std::uint32_t scan_index_ = 0;
-  std::uint32_t next_label_ = 1;
-  TrackerCounters counters_;
+  using Frame::batch_;
+  using Frame::clutter_;
+  using Frame::clutter_prob_;
+  using Frame::counters_;
+  using Frame::gate_;
+  using Frame::model_;
+  using Frame::next_label_;
+  using Frame::outputs_;
+  using Frame::params_;
+  using Frame::reduction_;
+  using Frame::scan_index_;
 
   StaticVector<Component, kMaxComponents> components_;
   StaticVector<Component, Caps::kMaxMeasurements> births_;
@@ -386,18 +313,14 @@ class PhdFilter {
   StaticVector<Component, kMaxWork> work_;
   rfs::ReductionScratch<kMaxWork> scratch_;
   std::array<rfs::Linearized<T>, kMaxPredicted> lin_{};
-  rfs::MeasurementBatch<T, Caps::kMaxMeasurements> batch_;
   std::array<T, Caps::kMaxMeasurements> log_target_sum_{};
   std::array<T, Caps::kMaxMeasurements> log_detect_factor_{};
   std::array<T, Caps::kMaxMeasurements> target_prob_{};
-  std::array<T, Caps::kMaxMeasurements> clutter_prob_{};
   std::array<T, Caps::kMaxMeasurements> log_ratio_{};
   std::array<T, Caps::kMaxMeasurements> log_kappa_eff_{};  ///< ln kappa used per active z (F8 cap)
   std::array<std::size_t, Caps::kMaxMeasurements> active_index_{};
   std::array<T, kMaxCardinality + 1> esf_{}, esf_loo_{}, la0_{}, la1_{}, la_loo_{};
   Cardinality<T, kMaxCardinality> cardinality_;
-  rfs::ClutterEstimator<T, Caps::kMaxMeasurements, Caps::kMaxClutterComponents> clutter_;
-  OutputQueue outputs_;
 };
 
 }  // namespace mptrack::phd
