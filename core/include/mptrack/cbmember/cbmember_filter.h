@@ -326,30 +326,15 @@ class CbMemberFilter : public rfs::GmFilterFrame<CbMemberFilter<T, Caps>, T, Cap
         if (t.comps[j].weight > t.comps[h].weight) h = j;
       }
       const Component& c = t.comps[h];
-      TrackReport<T> r;
+      TrackReport<T> r = rfs::component_report(c, params_.amplitude.use_amplitude);
       r.id = t.label;
-      r.state = c.x;
-      r.covariance = c.P;
       r.existence = t.r;
-      r.snr = params_.amplitude.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
-      r.confirmed = true;
-      r.measurement_index = c.measurement;
       if (e.tracks.push_back(r) != Status::kOk) break;
     }
     clutter_.report(e.clutter);
   }
 
-  using Frame::batch_;
-  using Frame::clutter_;
-  using Frame::clutter_prob_;
-  using Frame::counters_;
-  using Frame::gate_;
-  using Frame::model_;
-  using Frame::next_label_;
-  using Frame::outputs_;
-  using Frame::params_;
-  using Frame::reduction_;
-  using Frame::scan_index_;
+  MPTRACK_GM_FRAME_MEMBERS(Frame);
 
   StaticVector<Track, kMaxTracks> tracks_;
   StaticVector<Track, Caps::kMaxMeasurements> births_;

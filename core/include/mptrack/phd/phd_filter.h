@@ -284,28 +284,13 @@ class PhdFilter : public rfs::GmFilterFrame<PhdFilter<T, Caps, Cardinalized>, T,
   }
 
   Status add_track(Estimate& e, const Component& c, std::uint32_t copy) {
-    TrackReport<T> r;
+    TrackReport<T> r = rfs::component_report(c, params_.amplitude.use_amplitude);
     r.id = c.label + (copy << 24);
-    r.state = c.x;
-    r.covariance = c.P;
     r.existence = c.weight < T(1) ? c.weight : T(1);
-    r.snr = params_.amplitude.use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
-    r.confirmed = true;
-    r.measurement_index = c.measurement;
     return e.tracks.push_back(r);
   }
 
-  using Frame::batch_;
-  using Frame::clutter_;
-  using Frame::clutter_prob_;
-  using Frame::counters_;
-  using Frame::gate_;
-  using Frame::model_;
-  using Frame::next_label_;
-  using Frame::outputs_;
-  using Frame::params_;
-  using Frame::reduction_;
-  using Frame::scan_index_;
+  MPTRACK_GM_FRAME_MEMBERS(Frame);
 
   StaticVector<Component, kMaxComponents> components_;
   StaticVector<Component, Caps::kMaxMeasurements> births_;

@@ -137,4 +137,32 @@ class GmFilterFrame {
   OutputQueue outputs_;
 };
 
+/// The report of one Gaussian component: state, covariance, SNR (when the
+/// amplitude is used), last measurement; the caller sets id and existence.
+template <class T>
+TrackReport<T> component_report(const TargetComponent<T>& c, bool use_amplitude) {
+  TrackReport<T> r;
+  r.state = c.x;
+  r.covariance = c.P;
+  r.snr = use_amplitude ? (c.power.mean() > T(1) ? c.power.mean() - T(1) : T(0)) : T(0);
+  r.confirmed = true;
+  r.measurement_index = c.measurement;
+  return r;
+}
+
 }  // namespace mptrack::rfs
+
+/// Brings the frame's state into a filter's scope (its members are names of
+/// a dependent base, which unqualified lookup does not search).
+#define MPTRACK_GM_FRAME_MEMBERS(Frame) \
+  using Frame::batch_;                  \
+  using Frame::clutter_;                \
+  using Frame::clutter_prob_;           \
+  using Frame::counters_;               \
+  using Frame::gate_;                   \
+  using Frame::model_;                  \
+  using Frame::next_label_;             \
+  using Frame::outputs_;                \
+  using Frame::params_;                 \
+  using Frame::reduction_;              \
+  using Frame::scan_index_
