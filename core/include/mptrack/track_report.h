@@ -3,15 +3,11 @@
 // metrics and the golden tests only see these types, so trackers are
 // interchangeable (MF-BP, its ablations, GM-PHD/CPHD, GNN).
 //
-// Tracker contract (duck-typed, no virtual calls in core):
-//   using Scalar = T;   using ScanType = Scan<T, Caps::kMaxMeasurements>;
-//   Status init(const Params&);     validates once; nothing else may be called before it succeeds
-//   Status step(const ScanType&);   consumes one scan (time strictly increasing)
-//   Status flush();                 end of data: finalises every scan still held back
-//   const OutputQueue& outputs() const;   estimates finalised by the last step()/flush()
-//   const TrackerCounters& counters() const;
-// An online filter finalises one scan per step. A sliding-window smoother
-// finalises scans in batches with a lag (seed 000: window 7, slide 3).
+// The members every tracker provides and the rules it obeys are in
+// tracker_contract.h (checked at compile time and by
+// tests/unit/tracker_contract_test.cpp). An online filter finalises one
+// scan per step; a sliding-window smoother finalises scans in batches with
+// a lag (seed 000: window 7, slide 3).
 #pragma once
 
 #include <cstddef>

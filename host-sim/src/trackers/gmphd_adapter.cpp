@@ -62,8 +62,7 @@ RfsFilterParams<double> params_for(const TrackerSetup& setup, const std::string&
   return p;
 }
 
-/// Filter params for a Cartesian (seed 001) scenario [compare engineer,
-/// additive]: the seed 001 Sec. 5 models (CV sigma_nu 5 m/s^2, R = sigma_xy^2 I), the
+/// Filter params for a Cartesian (seed 001) scenario: the seed 001 Sec. 5 models (CV sigma_nu 5 m/s^2, R = sigma_xy^2 I), the
 /// scenario's threshold, Swerling case and clutter amplitude law (b, sigma0),
 /// and as the known / prior clutter rate the scenario's total mean count
 /// spread uniformly (the fixed model knows the rate, never the hot spots).

@@ -2,7 +2,7 @@
 // the "DTT" the VMP tracker is compared against; MATLAB trackerGNN
 // with ConfirmationThreshold [3 5], DeletionThreshold [5 5]).
 //
-// Follows the tracker contract of track_report.h. Per step():
+// Follows the tracker contract of tracker_contract.h. Per step():
 //   1. validate the scan (time strictly increasing, NaN/Inf or out-of-region
 //      measurements skipped and counted);
 //   2. predict every track with the CV model (model/cv_motion.h);

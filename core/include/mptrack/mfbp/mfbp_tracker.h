@@ -2,7 +2,7 @@
 // field + loopy-BP message passing over a sliding window, with target SNR,
 // visibility and non-uniform clutter estimation (docs/algorithms/mfbp.md).
 //
-// Call pattern (the tracker contract of track_report.h):
+// Call pattern (the tracker contract of tracker_contract.h):
 //   static MfbpTracker<float, SmallBoardCaps> tracker;     // .bss, no heap
 //   if (!ok(tracker.init(params))) { ... }
 //   for each scan:  Status s = tracker.step(scan);        // kOk / kPartial / ...
