@@ -51,7 +51,7 @@ TEST_CASE("cv_predict equals F P F^T + Q built as full matrices") {
 TEST_CASE("polar_predict gives the range/azimuth of the state and a Jacobian matching finite differences") {
   const Vec4 x(30.0, 1.0, 40.0, -2.0);
   const Mat4 P = spd_example();
-  const auto pred = mptrack::polar_predict(x, P, 0.2, 0.01);
+  const auto pred = mptrack::gnn::polar_predict(x, P, 0.2, 0.01);
   REQUIRE(pred.valid);
   CHECK(pred.z_hat(0) == doctest::Approx(50.0).epsilon(1e-15));
   CHECK(pred.z_hat(1) == doctest::Approx(std::atan2(40.0, 30.0)).epsilon(1e-14));
@@ -76,15 +76,15 @@ TEST_CASE("polar_predict gives the range/azimuth of the state and a Jacobian mat
 
 TEST_CASE("polar_predict refuses to linearise at the origin") {
   const Vec4 x(0.0, 1.0, 0.0, 1.0);
-  CHECK_FALSE(mptrack::polar_predict(x, spd_example(), 0.2, 0.01).valid);
+  CHECK_FALSE(mptrack::gnn::polar_predict(x, spd_example(), 0.2, 0.01).valid);
 }
 
 TEST_CASE("polar_innovation wraps the azimuth difference across +-pi") {
   const Vec4 x(-10.0, 0.0, 0.01, 0.0);  // azimuth just below +pi
-  const auto pred = mptrack::polar_predict(x, spd_example(), 0.2, 0.01);
+  const auto pred = mptrack::gnn::polar_predict(x, spd_example(), 0.2, 0.01);
   REQUIRE(pred.valid);
   const double z_az = -kPi + 0.002;  // just above -pi: 0.002 + 0.001 rad away
-  const auto nu = mptrack::polar_innovation(10.5, z_az, pred);
+  const auto nu = mptrack::gnn::polar_innovation(10.5, z_az, pred);
   CHECK(nu(0) == doctest::Approx(10.5 - std::hypot(10.0, 0.01)).epsilon(1e-12));
   CHECK(nu(1) == doctest::Approx(z_az + 2 * kPi - std::atan2(0.01, -10.0)).epsilon(1e-9));
   CHECK(std::fabs(nu(1)) < 0.01);
@@ -93,13 +93,13 @@ TEST_CASE("polar_innovation wraps the azimuth difference across +-pi") {
 TEST_CASE("Joseph-form update equals the textbook EKF update in double") {
   Vec4 x(30.0, 1.0, 40.0, -2.0);
   Mat4 P = spd_example();
-  const auto pred = mptrack::polar_predict(x, P, 0.2, 0.01);
+  const auto pred = mptrack::gnn::polar_predict(x, P, 0.2, 0.01);
   REQUIRE(pred.valid);
   const Eigen::Vector2d nu(0.3, -0.004);
   const Eigen::Matrix<double, 4, 2> K = P * pred.H.transpose() * pred.S.inverse();
   const Vec4 x_ref = x + K * nu;
   const Mat4 P_ref = (Mat4::Identity() - K * pred.H) * P;
-  mptrack::polar_update(x, P, nu, pred, 0.2, 0.01);
+  mptrack::gnn::polar_update(x, P, nu, pred, 0.2, 0.01);
   CHECK((x - x_ref).cwiseAbs().maxCoeff() < 1e-12);
   CHECK((P - P_ref).cwiseAbs().maxCoeff() < 1e-10);
 }
@@ -109,7 +109,7 @@ TEST_CASE("polar_initiate puts the measurement at zero velocity with covariance 
   Mat4 P;
   const double r = 50.0;
   const double az = 0.7;
-  mptrack::polar_initiate(r, az, 0.2, 0.01, 10.0, x, P);
+  mptrack::gnn::polar_initiate(r, az, 0.2, 0.01, 10.0, x, P);
   CHECK(x(0) == doctest::Approx(r * std::cos(az)).epsilon(1e-14));
   CHECK(x(2) == doctest::Approx(r * std::sin(az)).epsilon(1e-14));
   CHECK(x(1) == 0.0);
@@ -126,25 +126,25 @@ TEST_CASE("polar_initiate puts the measurement at zero velocity with covariance 
 }
 
 TEST_CASE("M-of-N logic: 3 hits in 5 confirms, a tentative track dies when 3 of 5 is out of reach") {
-  mptrack::GnnTrack<float> t;
-  mptrack::record_scan(t, true);   // birth
-  mptrack::record_scan(t, true);
-  CHECK_FALSE(mptrack::passes_confirmation(t, 3, 5));
-  mptrack::record_scan(t, false);
-  CHECK_FALSE(mptrack::should_delete(t, 3, 5, 5));  // 2 hits + 2 scans left
-  mptrack::record_scan(t, true);
-  CHECK(mptrack::passes_confirmation(t, 3, 5));
-  mptrack::GnnTrack<float> u;
-  mptrack::record_scan(u, true);
-  mptrack::record_scan(u, false);
-  mptrack::record_scan(u, false);
-  CHECK_FALSE(mptrack::should_delete(u, 3, 5, 5));  // 1 hit + 2 left = 3
-  mptrack::record_scan(u, false);
-  CHECK(mptrack::should_delete(u, 3, 5, 5));  // 1 hit + 1 left < 3
+  mptrack::gnn::GnnTrack<float> t;
+  mptrack::gnn::record_scan(t, true);   // birth
+  mptrack::gnn::record_scan(t, true);
+  CHECK_FALSE(mptrack::gnn::passes_confirmation(t, 3, 5));
+  mptrack::gnn::record_scan(t, false);
+  CHECK_FALSE(mptrack::gnn::should_delete(t, 3, 5, 5));  // 2 hits + 2 scans left
+  mptrack::gnn::record_scan(t, true);
+  CHECK(mptrack::gnn::passes_confirmation(t, 3, 5));
+  mptrack::gnn::GnnTrack<float> u;
+  mptrack::gnn::record_scan(u, true);
+  mptrack::gnn::record_scan(u, false);
+  mptrack::gnn::record_scan(u, false);
+  CHECK_FALSE(mptrack::gnn::should_delete(u, 3, 5, 5));  // 1 hit + 2 left = 3
+  mptrack::gnn::record_scan(u, false);
+  CHECK(mptrack::gnn::should_delete(u, 3, 5, 5));  // 1 hit + 1 left < 3
   u.confirmed = true;  // a confirmed track survives until max_misses
-  CHECK_FALSE(mptrack::should_delete(u, 3, 5, 5));
+  CHECK_FALSE(mptrack::gnn::should_delete(u, 3, 5, 5));
   CHECK(u.consecutive_misses == 3);
-  mptrack::record_scan(u, false);
-  mptrack::record_scan(u, false);
-  CHECK(mptrack::should_delete(u, 3, 5, 5));
+  mptrack::gnn::record_scan(u, false);
+  mptrack::gnn::record_scan(u, false);
+  CHECK(mptrack::gnn::should_delete(u, 3, 5, 5));
 }

@@ -311,13 +311,13 @@ TEST_CASE("F12: a GNN track born near range 0 has a positive definite covariance
   mptrack::model::CvState<float> x;
   mptrack::model::CvCovariance<float> P;
   for (const float r : {0.0f, 1e-20f, 1e-3f}) {
-    mptrack::polar_initiate(r, 0.7f, 0.2f, 0.01f, 10.0f, x, P);
+    mptrack::gnn::polar_initiate(r, 0.7f, 0.2f, 0.01f, 10.0f, x, P);
     CHECK(llt_ok(P));
     const float det = P(0, 0) * P(2, 2) - P(0, 2) * P(2, 0);
     CHECK(det > 0.0f);
   }
   // far from 0 the floor does not bind: cross-range variance (r sigma_az)^2
-  mptrack::polar_initiate(100.0f, 0.0f, 0.2f, 0.01f, 10.0f, x, P);
+  mptrack::gnn::polar_initiate(100.0f, 0.0f, 0.2f, 0.01f, 10.0f, x, P);
   CHECK(P(2, 2) == doctest::Approx(1.0f));
   CHECK(P(0, 0) == doctest::Approx(0.04f));
 }

@@ -14,7 +14,7 @@
 
 #include "mptrack/model/cv_motion.h"
 
-namespace mptrack {
+namespace mptrack::gnn {
 
 template <class T>
 struct GnnTrack {
@@ -60,4 +60,4 @@ bool should_delete(const GnnTrack<T>& t, std::uint32_t hits, std::uint32_t windo
   return hits_in_window(t.hit_history, window) + scans_left < hits;
 }
 
-}  // namespace mptrack
+}  // namespace mptrack::gnn

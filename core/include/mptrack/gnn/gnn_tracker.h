@@ -147,7 +147,7 @@ class GnnTracker {
   const TrackerCounters& counters() const { return counters_; }
   const Params& params() const { return params_; }
   /// Live tracks (tentative and confirmed), in birth order.
-  const StaticVector<GnnTrack<T>, kMaxTracks>& tracks() const { return tracks_; }
+  const StaticVector<gnn::GnnTrack<T>, kMaxTracks>& tracks() const { return tracks_; }
 
  private:
   // Step 1: indices of the valid measurements, in scan order; exact
@@ -193,13 +193,13 @@ class GnnTracker {
     MPTRACK_TRY(solver_.resize(n_tracks, n_meas + n_tracks));
     const T gate = params_.gate_chi2;
     for (std::size_t i = 0; i < n_tracks; ++i) {
-      const GnnTrack<T>& t = tracks_[i];
-      pred_[i] = polar_predict(t.x, t.P, params_.noise.range_std_m, params_.noise.azimuth_std_rad);
+      const gnn::GnnTrack<T>& t = tracks_[i];
+      pred_[i] = gnn::polar_predict(t.x, t.P, params_.noise.range_std_m, params_.noise.azimuth_std_rad);
       for (std::size_t j = 0; j < n_meas; ++j) {
         T cost = T(1);  // outside the gate (never chosen, see header)
         if (pred_[i].valid) {
           const Measurement<T>& m = scan.measurements[valid_[j]];
-          const T d2 = mahalanobis2(polar_innovation(m.range_m, m.azimuth_rad, pred_[i]), pred_[i]);
+          const T d2 = gnn::mahalanobis2(gnn::polar_innovation(m.range_m, m.azimuth_rad, pred_[i]), pred_[i]);
           if (d2 <= gate) cost = d2 - gate;
         }
         solver_.cost(i, j) = cost;
@@ -221,20 +221,20 @@ class GnnTracker {
   // Steps 4-5: update or coast each track, then confirm / delete.
   void update_and_manage(const ScanType& scan) {
     for (std::size_t i = 0; i < tracks_.size(); ++i) {
-      GnnTrack<T>& t = tracks_[i];
+      gnn::GnnTrack<T>& t = tracks_[i];
       const bool hit = assigned_[i] >= 0;
       t.measurement_index = -1;
       if (hit) {
         const std::size_t scan_j = valid_[static_cast<std::size_t>(assigned_[i])];
         const Measurement<T>& m = scan.measurements[scan_j];
-        polar_update(t.x, t.P, polar_innovation(m.range_m, m.azimuth_rad, pred_[i]), pred_[i],
+        gnn::polar_update(t.x, t.P, gnn::polar_innovation(m.range_m, m.azimuth_rad, pred_[i]), pred_[i],
                      params_.noise.range_std_m, params_.noise.azimuth_std_rad);
         if (model::keep_spd(t.P, params_.min_variance)) ++counters_.numerical_repairs;
         t.measurement_index = static_cast<std::int32_t>(scan_j);
       }
-      record_scan(t, hit);
+      gnn::record_scan(t, hit);
       if (!t.confirmed &&
-          passes_confirmation(t, params_.confirm_hits, params_.confirm_window)) {
+          gnn::passes_confirmation(t, params_.confirm_hits, params_.confirm_window)) {
         t.confirmed = true;
         ++counters_.tracks_confirmed;
       }
@@ -242,7 +242,7 @@ class GnnTracker {
     // Deletion keeps the birth order of the survivors (deterministic output).
     std::size_t i = 0;
     while (i < tracks_.size()) {
-      if (should_delete(tracks_[i], params_.confirm_hits, params_.confirm_window,
+      if (gnn::should_delete(tracks_[i], params_.confirm_hits, params_.confirm_window,
                         params_.max_misses)) {
         static_cast<void>(tracks_.erase(i));  // i < size: cannot fail
         ++counters_.tracks_deleted;
@@ -261,14 +261,14 @@ class GnnTracker {
         continue;
       }
       const Measurement<T>& m = scan.measurements[valid_[j]];
-      GnnTrack<T> t;
+      gnn::GnnTrack<T> t;
       t.id = next_id_++;
-      polar_initiate(m.range_m, m.azimuth_rad, params_.noise.range_std_m, params_.noise.azimuth_std_rad,
+      gnn::polar_initiate(m.range_m, m.azimuth_rad, params_.noise.range_std_m, params_.noise.azimuth_std_rad,
                      params_.init_velocity_std_mps, t.x, t.P);
       t.measurement_index = static_cast<std::int32_t>(valid_[j]);
-      record_scan(t, true);
+      gnn::record_scan(t, true);
       // M = 1 confirms at birth.
-      if (passes_confirmation(t, params_.confirm_hits, params_.confirm_window)) {
+      if (gnn::passes_confirmation(t, params_.confirm_hits, params_.confirm_window)) {
         t.confirmed = true;
         ++counters_.tracks_confirmed;
       }
@@ -286,14 +286,14 @@ class GnnTracker {
     e.tracks.clear();
     e.clutter.clear();
     const T inv_window = T(1) / static_cast<T>(params_.confirm_window);
-    for (const GnnTrack<T>& t : tracks_) {
+    for (const gnn::GnnTrack<T>& t : tracks_) {
       if (!t.confirmed && !params_.report_tentative) continue;
       TrackReport<T> r;
       r.id = t.id;
       r.state = t.x;
       r.covariance = t.P;
       // No existence model in a GNN: report the hit fraction of the M-of-N window.
-      r.existence = static_cast<T>(hits_in_window(t.hit_history, params_.confirm_window)) * inv_window;
+      r.existence = static_cast<T>(gnn::hits_in_window(t.hit_history, params_.confirm_window)) * inv_window;
       r.snr = T(0);  // not estimated
       r.confirmed = t.confirmed;
       r.measurement_index = t.measurement_index;
@@ -302,7 +302,7 @@ class GnnTracker {
   }
 
   Params params_{};
-  StaticVector<GnnTrack<T>, kMaxTracks> tracks_;
+  StaticVector<gnn::GnnTrack<T>, kMaxTracks> tracks_;
   OutputQueue outputs_;
   TrackerCounters counters_{};
   // Per-step scratch (members, not stack: README.md §Conventions a firmware engineer
@@ -311,7 +311,7 @@ class GnnTracker {
   std::array<bool, kMaxMeasurements> kept_{};                     ///< per scan index: in valid_
   std::array<bool, kMaxMeasurements> measurement_used_{};         ///< per valid measurement
   std::array<std::int32_t, kMaxTracks> assigned_{};               ///< per track: valid index or -1
-  std::array<PolarPrediction<T>, kMaxTracks> pred_{};
+  std::array<gnn::PolarPrediction<T>, kMaxTracks> pred_{};
   AssignmentSolver<T, kMaxTracks, kMaxMeasurements + kMaxTracks> solver_;
   ScanClock clock_;
   std::uint32_t next_id_ = 1;

@@ -26,7 +26,7 @@
 #include "mptrack/model/mahalanobis.h"
 #include "mptrack/model/polar_measurement.h"
 
-namespace mptrack {
+namespace mptrack::gnn {
 
 /// Everything gating and updating need from one track's prediction.
 template <class T>
@@ -144,4 +144,4 @@ void polar_initiate(T range_m, T azimuth_rad, T sigma_range_m, T sigma_azimuth_r
   P(3, 3) = var_v;
 }
 
-}  // namespace mptrack
+}  // namespace mptrack::gnn
