@@ -22,6 +22,7 @@
 
 #include "mptrack/math/constants.h"
 #include "mptrack/model/clutter_mode.h"
+#include "mptrack/model/measurement_validator.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
 
@@ -57,6 +58,17 @@ struct PolarRegion {
   bool contains(T range_m, T azimuth_rad) const {
     return range_m >= range_min_m && range_m <= range_max_m && azimuth_rad >= azimuth_min_rad &&
            azimuth_rad <= azimuth_max_rad;
+  }
+
+  /// The shared intake check over this region (model/measurement_validator.h);
+  /// the caller adds its amplitude and Doppler rules.
+  model::MeasurementValidator<T> validator() const {
+    model::MeasurementValidator<T> v;
+    v.min0 = range_min_m;
+    v.max0 = range_max_m;
+    v.min1 = azimuth_min_rad;
+    v.max1 = azimuth_max_rad;
+    return v;
   }
 
   Status validate(ParamError* where) const {

@@ -157,11 +157,8 @@ class GnnTracker {
     std::size_t invalid = 0;
     std::size_t duplicate = 0;
     counters_.measurements_in += scan.measurements.size();
-    model::MeasurementValidator<T> check;  // model/measurement_validator.h; amplitude unused
-    check.min0 = params_.region.range_min_m;
-    check.max0 = params_.region.range_max_m;
-    check.min1 = params_.region.azimuth_min_rad;
-    check.max1 = params_.region.azimuth_max_rad;
+    // model/measurement_validator.h over the region; amplitude unused.
+    const model::MeasurementValidator<T> check = params_.region.validator();
     for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
       const Measurement<T>& m = scan.measurements[j];
       const bool ok = check.valid(m);

@@ -21,6 +21,7 @@
 #include "mptrack/mfbp/amplitude_stats.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/normal_wishart.h"
+#include "mptrack/model/measurement_validator.h"
 #include "mptrack/track_report.h"
 #include "mptrack/validate.h"
 
@@ -88,12 +89,13 @@ class WindowStore {
     s.has_beliefs = false;
     s.lambda_hat = T(0);
     s.doppler = scan.has_doppler && p.use_doppler;
+    const model::MeasurementValidator<T> check = intake_check(p, s.doppler);
     bool rejected = false;
     for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
       const Measurement<T>& m = scan.measurements[j];
       ++counters.measurements_in;
       kept[j] = false;
-      if (!valid_measurement(m, p, s.doppler)) {
+      if (!check.valid(m)) {
         ++counters.measurements_invalid;
         rejected = true;
         continue;
@@ -138,16 +140,18 @@ class WindowStore {
   }
 
  private:
-  static bool in_region(T r, T az, const MfbpParams<T>& p) {
-    return p.region.contains(r, az);
-  }
-
-  static bool valid_measurement(const Measurement<T>& m, const MfbpParams<T>& p, bool doppler) {
-    return is_finite(m.range_m) && is_finite(m.azimuth_rad) && is_finite(m.amplitude) &&
-           m.amplitude > p.amplitude.threshold && !(m.amplitude > p.amplitude.max_amplitude) &&
-           in_region(m.range_m, m.azimuth_rad, p) &&
-           (!doppler || (is_finite(m.doppler_mps) && !(m.doppler_mps > p.doppler_span_mps) &&
-                         !(m.doppler_mps < -p.doppler_span_mps)));
+  // The shared intake check (model/measurement_validator.h): finite, inside
+  // the region, amplitude in (d, max_amplitude] (also for the kinematics-only
+  // variant: the detector threshold holds either way), radial velocity
+  // within +-doppler_span_mps when the scan's Doppler is used.
+  static model::MeasurementValidator<T> intake_check(const MfbpParams<T>& p, bool doppler) {
+    model::MeasurementValidator<T> v = p.region.validator();
+    v.amplitude = model::AmplitudeRule::kThresholded;
+    v.threshold = p.amplitude.threshold;
+    v.max_amplitude = p.amplitude.max_amplitude;
+    v.check_doppler = doppler;
+    v.doppler_span_mps = p.doppler_span_mps;
+    return v;
   }
 
   /// Range order for the birth search (track_spawn.h); ties by index, so the

@@ -163,10 +163,7 @@ struct RfsFilterParams {
   model::MeasurementValidator<T> validator() const {
     model::MeasurementValidator<T> v;
     if (space == MeasurementSpace::kPolar) {
-      v.min0 = region.range_min_m;
-      v.max0 = region.range_max_m;
-      v.min1 = region.azimuth_min_rad;
-      v.max1 = region.azimuth_max_rad;
+      v = region.validator();
     } else {
       v.min0 = cartesian_region.x_min_m;
       v.max0 = cartesian_region.x_max_m;
