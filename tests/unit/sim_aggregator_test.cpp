@@ -10,23 +10,16 @@
 #include "eval/aggregator.h"
 #include "eval/scan_evaluator.h"
 #include "run/run_record.h"
+#include "sim_test_truth.h"
 #include "writers.h"
 
 using namespace mptrack::sim;
 using mptrack::Status;
 using mptrack::TrackerCounters;
 namespace sc = mptrack::scenario;
+using sim_test::truth_at;
 
 namespace {
-
-sc::TruthState truth_at(std::uint32_t id, double x, double y, std::int32_t meas) {
-  sc::TruthState t;
-  t.target_id = id;
-  t.x.px = x;
-  t.x.py = y;
-  t.measurement_index = meas;
-  return t;
-}
 
 TrackOut track_at(std::uint32_t id, double x, double y, bool confirmed) {
   TrackOut t;

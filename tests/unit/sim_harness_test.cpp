@@ -12,21 +12,14 @@
 #include "mptrack/scenario/builtin.h"
 #include "runner.h"
 #include "tracker_registry.h"
+#include "sim_test_truth.h"
 #include "writers.h"
 
 using namespace mptrack::sim;
 namespace sc = mptrack::scenario;
+using sim_test::truth_at;
 
 namespace {
-
-sc::TruthState truth(std::uint32_t id, double x, double y, std::int32_t meas) {
-  sc::TruthState t;
-  t.target_id = id;
-  t.x.px = x;
-  t.x.py = y;
-  t.measurement_index = meas;
-  return t;
-}
 
 TrackOut track(std::uint32_t id, double x, double y, bool confirmed, std::int32_t meas) {
   TrackOut t;
@@ -58,7 +51,7 @@ std::size_t line_count(const std::string& path) {
 TEST_CASE("sim metrics: OSPA, GOSPA, NFT and CAR on hand-computed geometry") {
   sc::SimScan scan;
   scan.scan = 7;
-  scan.truth = {truth(1, 0.0, 0.0, 0), truth(2, 1000.0, 0.0, 1)};
+  scan.truth = {truth_at(1, 0.0, 0.0, 0), truth_at(2, 1000.0, 0.0, 1)};
   EstimateOut est;
   est.scan = 7;
   est.tracks = {track(10, 3.0, 4.0, true, 0),          // 5 m from truth 1, its measurement
@@ -91,7 +84,7 @@ TEST_CASE("sim metrics: OSPA, GOSPA, NFT and CAR on hand-computed geometry") {
 TEST_CASE("sim identity CAR: a track keeps the label of its first match; coincident tracks keep theirs") {
   sc::SimScan scan;
   scan.scan = 1;
-  scan.truth = {truth(1, 0.0, 0.0, 0), truth(2, 1000.0, 0.0, 1)};
+  scan.truth = {truth_at(1, 0.0, 0.0, 0), truth_at(2, 1000.0, 0.0, 1)};
   EstimateOut est;
   est.scan = 1;
   // Resolved: track 10 on target 1, track 11 on target 2, each on its own measurement.
@@ -106,7 +99,7 @@ TEST_CASE("sim identity CAR: a track keeps the label of its first match; coincid
   // its own target's measurement. The per-scan OSPA assignment of two tracks at
   // one point is arbitrary; the labels are not.
   scan.scan = 2;
-  scan.truth = {truth(1, 500.0, 0.0, 0), truth(2, 500.0, 0.0, 1)};
+  scan.truth = {truth_at(1, 500.0, 0.0, 0), truth_at(2, 500.0, 0.0, 1)};
   est.tracks = {track(11, 500.0, 0.0, true, 1), track(10, 500.0, 0.0, true, 0)};
   const ScanMetrics same = ev.evaluate(scan, est);
   CHECK(same.car_id_correct == 2);

@@ -73,6 +73,14 @@ class ScanClock {
     return has_time_ ? static_cast<T>(time_us - last_time_us_) * T(1e-6) : first_dt_s;
   }
 
+  /// What init() of every tracker does: forget every scan and install the
+  /// max-gap rule from its validated Params::max_gap_s [s].
+  template <class T>
+  void start(T max_gap_s) {
+    reset();
+    set_max_gap_s(max_gap_s);
+  }
+
   /// Records the scan at time_us as accepted.
   void advance(std::uint64_t time_us) {
     last_time_us_ = time_us;

@@ -99,6 +99,6 @@ void for_each_counter(F&& f) {
 /// Number of fields for_each_counter() visits.
 inline constexpr std::size_t kTrackerCounterFields = 17;
 static_assert(sizeof(TrackerCounters) == kTrackerCounterFields * sizeof(std::uint64_t),
-              "TrackerCounters changed: list the new field in for_each_counter()");
+              "every TrackerCounters field must be listed in for_each_counter()");
 
 }  // namespace mptrack

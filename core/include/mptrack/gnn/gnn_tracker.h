@@ -87,8 +87,7 @@ class GnnTracker {
     outputs_.clear();
     counters_ = TrackerCounters{};
     next_id_ = 1;
-    clock_.reset();
-    clock_.set_max_gap_s(params_.max_gap_s);
+    clock_.start(params_.max_gap_s);
     initialized_ = true;
     return Status::kOk;
   }

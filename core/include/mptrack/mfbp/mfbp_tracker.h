@@ -138,8 +138,7 @@ class MfbpTracker {
     next_comp_id_ = 1;
     finalized_ = 0;
     assoc_stats_ = mfbp::AssociationStats{};
-    clock_.reset();
-    clock_.set_max_gap_s(params_.max_gap_s);
+    clock_.start(params_.max_gap_s);
     // Clutter priors at "scan -1".
     clutter_.uniform.ig0.a = params.uniform_cnr_prior_shape;
     clutter_.uniform.ig0.b = (T(1) + params.uniform_cnr_prior) * (params.uniform_cnr_prior_shape - T(1));

@@ -67,8 +67,7 @@ class GmFilterFrame {
     counters_ = TrackerCounters{};
     next_label_ = 1;
     scan_index_ = 0;
-    clock_.reset();
-    clock_.set_max_gap_s(p.max_gap_s);
+    clock_.start(p.max_gap_s);
     initialized_ = true;
     return Status::kOk;
   }
