@@ -108,7 +108,20 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
   j["counters"] = nlohmann::ordered_json::object();
   for_each_counter([&](const char* name, std::uint64_t TrackerCounters::*field) { j["counters"][name] = c.*field; });
   j["ospa_per_scan"] = s.ospa_per_scan;
+  j["cardinality_per_scan"] = {{"mean_confirmed", s.confirmed_mean_per_scan},
+                               {"std_confirmed", s.confirmed_std_per_scan},
+                               {"mean_truths", s.truths_per_scan}};
+  j["object_rmse_m"] = object_rmse_json(s);
   return j;
+}
+
+nlohmann::ordered_json object_rmse_json(const Summary& s) {
+  return {{"p50", s.object_rmse_quantile(0.5)},
+          {"p90", s.object_rmse_quantile(0.9)},
+          {"max", s.object_rmse_m.empty() ? 0.0 : s.object_rmse_m.back()},
+          {"objects", s.object_rmse_m.size()},
+          {"never_matched", s.objects_never_matched},
+          {"sorted", s.object_rmse_m}};
 }
 
 void write_summary_json(const Summary& s, const std::string& path) {

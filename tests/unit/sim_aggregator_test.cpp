@@ -192,3 +192,60 @@ TEST_CASE("sim aggregator: the measurement checksum chains over delivered scans 
   CHECK(agg.summary().measurement_checksum == expected);
   CHECK(expected != measurement_checksum(scans[0], measurement_checksum(scans[2], kChecksumSeed)));
 }
+
+TEST_CASE("sim evaluator: matched lists each truth within c of its OSPA-assigned track, with the distance") {
+  // c = 10 m. Truth 1 <- track at 5 m (3-4-5); truth 2's nearest track is 12 m away (beyond c).
+  sc::SimScan scan;
+  scan.scan = 1;
+  scan.truth = {truth_at(1, 0.0, 0.0, -1), truth_at(2, 100.0, 0.0, -1)};
+  EstimateOut est;
+  est.tracks = {track_at(7, 3.0, 4.0, true), track_at(8, 112.0, 0.0, true)};
+  ScanEvaluator ev(10.0, 2.0);
+  const ScanMetrics m = ev.evaluate(scan, est);
+  REQUIRE(m.matched.size() == 1);
+  CHECK(m.matched[0].target_id == 1);
+  CHECK(m.matched[0].distance_m == doctest::Approx(5.0));
+}
+
+TEST_CASE("sim aggregator: confirmed-track count per scan, mean and standard deviation over runs") {
+  // 3 runs x 2 scans; confirmed counts scan 1: 1, 2, 3 (mean 2, population std sqrt(2/3));
+  // scan 2: 4, 4, 4 (std 0). Truths: 2, 2, 1 at scan 1.
+  Aggregator agg(SummaryHeader{"s", "t", 3, 2, 1, 1.0, 1, 2});
+  const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0)};
+  const std::uint32_t scan1[] = {1, 2, 3};
+  const std::uint32_t truths1[] = {2, 2, 1};
+  for (std::uint32_t r = 0; r < 3; ++r) {
+    RunRecord rec = record(r, {1, 2}, {0, 0, 0});
+    rec.by_scan.resize(2);
+    agg.add_run(scans, rec, {metrics(0, truths1[r], scan1[r], 0), metrics(0, 1, 4, 0)});
+  }
+  const Summary s = agg.summary();
+  REQUIRE(s.confirmed_mean_per_scan.size() == 2);
+  CHECK(s.confirmed_mean_per_scan[0] == doctest::Approx(2.0));
+  CHECK(s.confirmed_std_per_scan[0] == doctest::Approx(std::sqrt(2.0 / 3.0)));
+  CHECK(s.confirmed_mean_per_scan[1] == doctest::Approx(4.0));
+  CHECK(s.confirmed_std_per_scan[1] == doctest::Approx(0.0));
+  CHECK(s.truths_per_scan[0] == doctest::Approx(5.0 / 3.0));
+}
+
+TEST_CASE("sim aggregator: per-object RMSE over matched evaluation scans, sorted, and objects never matched") {
+  // 1 run x 3 scans, evaluation 2..3. Target 1 matched at 3 m (scan 2) and 4 m (scan 3):
+  // RMSE sqrt((9 + 16) / 2). Target 2 alive at scans 2, 3, matched only at scan 1 (not
+  // evaluated): never matched. Target 3 matched at 1 m on scan 3: RMSE 1.
+  Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 2, 3});
+  std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
+  for (auto& s : scans) s.truth = {truth_at(1, 0, 0, -1), truth_at(2, 50, 0, -1)};
+  scans[2].truth.push_back(truth_at(3, 90, 0, -1));
+  std::vector<ScanMetrics> m(3);
+  m[0].matched = {ObjectError{2, 7.0}};
+  m[1].matched = {ObjectError{1, 3.0}};
+  m[2].matched = {ObjectError{1, 4.0}, ObjectError{3, 1.0}};
+  agg.add_run(scans, record(0, {1, 2, 3}, {0, 0, 0}), m);
+  const Summary s = agg.summary();
+  REQUIRE(s.object_rmse_m.size() == 2);
+  CHECK(s.object_rmse_m[0] == doctest::Approx(1.0));
+  CHECK(s.object_rmse_m[1] == doctest::Approx(std::sqrt(12.5)));
+  CHECK(s.objects_never_matched == 1);
+  CHECK(s.object_rmse_quantile(0.5) == doctest::Approx(1.0));   // nearest rank: ceil(0.5 * 2) = 1st
+  CHECK(s.object_rmse_quantile(0.9) == doctest::Approx(std::sqrt(12.5)));
+}

@@ -10,6 +10,8 @@
 #include <string>
 
 #include "compare.h"
+#include "mptrack/adc/adc_json.h"
+#include "stream/adc_compare.h"
 #include "mptrack/scenario/builtin.h"
 #include "mptrack/scenario/generator.h"
 #include "runner.h"
@@ -168,4 +170,37 @@ TEST_CASE("compare: tracker lists, defaults and errors") {
   cfg.trackers = {"no-such-tracker"};
   cfg.progress = false;
   CHECK_THROWS_AS(run_compare(cfg), std::runtime_error);
+}
+
+TEST_CASE("compare on raw ADC: every pipeline sees the same frames and agrees with the single-tracker runner") {
+  AdcRunConfig cfg;
+  REQUIRE(mptrack::adc::builtin_adc_scenario("seed004-drones", cfg.scenario));
+  cfg.frames = 12;
+  cfg.runs = 2;
+  cfg.progress = false;
+  cfg.plot = false;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mptrack_adc_compare_test";
+  std::filesystem::remove_all(dir);
+  cfg.out_dir = dir.string();
+  const std::vector<AdcSummary> rows = run_adc_compare(cfg, {"gnn", "mfbp-filter"});
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0].base.tracker == "gnn");
+  CHECK(rows[1].base.tracker == "mfbp-filter");
+  // Both consumed the front end's detections of the same frames.
+  CHECK(rows[0].base.measurement_checksum == rows[1].base.measurement_checksum);
+  AdcRunConfig one = cfg;
+  one.tracker = "mfbp-filter";
+  one.out_dir.clear();
+  const AdcSummary single = run_adc_monte_carlo(one);
+  CHECK(rows[1].base.mean_ospa == doctest::Approx(single.base.mean_ospa).epsilon(1e-12));
+  CHECK(rows[1].base.measurement_checksum == single.base.measurement_checksum);
+  // frames.csv: a header and one row per (tracker, frame).
+  std::ifstream f(dir / "frames.csv");
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(f, line)) ++n;
+  CHECK(n == 1 + 2 * 12);
+  CHECK(std::filesystem::exists(dir / "compare.md"));
+  CHECK(std::filesystem::exists(dir / "rmse.csv"));
+  std::filesystem::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "cli/commands.h"
+#include "mptrack/adc/adc_json.h"
 
 namespace mptrack::sim {
 
@@ -27,6 +28,20 @@ double parse_ratio(const std::string& text, const char* flag) {
   } catch (const std::exception&) {
   }
   throw std::runtime_error(std::string(flag) + ": expected a number or a ratio like 10/3, got '" + text + "'");
+}
+
+bool is_adc_scenario(const std::string& name, const std::string& file) {
+  if (!file.empty()) return adc::is_adc_scenario_file(file);
+  adc::AdcScenario s;
+  return adc::builtin_adc_scenario(name, s);
+}
+
+bool load_adc_scenario(const std::string& name, const std::string& file, adc::AdcScenario& out) {
+  if (!file.empty()) {
+    out = adc::load_adc_scenario_file(file);
+    return true;
+  }
+  return adc::builtin_adc_scenario(name, out);
 }
 
 }  // namespace mptrack::sim

@@ -2,10 +2,12 @@
 // by side (compare.h); prints the table, writes DIR/compare.{md,json} and
 // DIR/ospa.svg. Takes --no-plot and --no-progress from the top level.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "cli/commands.h"
 #include "compare.h"
+#include "stream/adc_compare.h"
 #include "scenario_json.h"
 
 namespace mptrack::sim {
@@ -20,7 +22,33 @@ struct CompareArgs {
   CompareConfig config;
 };
 
+/// The raw-frame pipelines of seed 004 (adc_compare.h) on a raw-ADC scenario.
+int run_adc_compare_command(const CompareArgs& a, const RunOptions& o, const std::string& file) {
+  AdcRunConfig cfg;
+  if (!load_adc_scenario(a.scenario, file, cfg.scenario)) throw std::runtime_error("unknown scenario " + a.scenario);
+  cfg.runs = a.config.runs;
+  cfg.seed = a.config.seed;
+  cfg.frames = a.scans;
+  cfg.out_dir = a.config.out_dir.empty() ? "out/compare-" + cfg.scenario.name : a.config.out_dir;
+  cfg.plot = !o.no_plot;
+  cfg.progress = !o.no_progress;
+  cfg.mfbp_params = a.config.mfbp_params;
+  const std::vector<std::string> trackers =
+      a.trackers.empty() ? std::vector<std::string>{"vmp", "sbl-gnn", "mfbp", "mfbp-filter", "gnn"}
+                         : parse_tracker_list(a.trackers);
+  const std::vector<AdcSummary> rows = run_adc_compare(cfg, trackers);
+  std::printf("%s", adc_compare_to_markdown(rows, cfg).c_str());
+  std::printf("wrote %s/{compare.md,compare.json,frames.csv,rmse.csv,frontend.csv%s}\n", cfg.out_dir.c_str(),
+              cfg.plot ? ",ospa.svg" : "");
+  std::printf("figures: python3 host-sim/plots/compare_figures.py %s\n", cfg.out_dir.c_str());
+  return 0;
+}
+
 int run_compare_command(const CompareArgs& a, const RunOptions& o) {
+  const bool is_file = std::filesystem::is_regular_file(a.scenario);
+  if (is_adc_scenario(is_file ? "" : a.scenario, is_file ? a.scenario : "")) {
+    return run_adc_compare_command(a, o, is_file ? a.scenario : "");
+  }
   CompareConfig cc = a.config;
   cc.spec = resolve_scenario(a.scenario);
   truncate_scans(cc.spec, a.scans);
@@ -36,17 +64,19 @@ int run_compare_command(const CompareArgs& a, const RunOptions& o) {
 
 void add_options(CLI::App& cmd, CompareArgs& a) {
   a.config.runs = 10;
-  cmd.add_option("--scenario", a.scenario, "built-in name (seed000-s1..s3, seed001-s1..s5) or a scenario JSON file")
+  cmd.add_option("--scenario", a.scenario, "built-in name (seed000-s1..s3, seed001-s1..s5; raw ADC: seed004-drones, mimo-interference) or a "
+                 "scenario JSON file")
       ->capture_default_str();
   cmd.add_option("--trackers", a.trackers,
                  "comma-separated tracker names (see `mptrack-sim --help`). Default: polar scenarios "
                  "mfbp,mfbp-filter,gmphd,gmcphd,cbmember,gmcphd-known,gnn; Cartesian (seed001) "
-                 "gmphd,gmphd-known,gmcphd,gmcphd-known,cbmember,cbmember-known");
+                 "gmphd,gmphd-known,gmcphd,gmcphd-known,cbmember,cbmember-known; raw ADC "
+                 "vmp,sbl-gnn,mfbp,mfbp-filter,gnn");
   cmd.add_option("--runs", a.config.runs, "Monte Carlo runs (each tracker sees the same runs)")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd.add_option("--seed", a.config.seed, "random seed (run r, scan k use stream (seed, r, k))")->capture_default_str();
   cmd.add_option("--out", a.config.out_dir, "output directory (default out/compare-<scenario>)");
-  cmd.add_option("--scans", a.scans, "use only the first N scans (0 = all)");
+  cmd.add_option("--scans", a.scans, "use only the first N scans (raw ADC: frames; 0 = all)");
   cmd.add_option("--clutter-scale", a.config.clutter_scale, "multiply every clutter mean count")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd.add_option("--ospa-c", a.config.ospa_cutoff_m, "OSPA/GOSPA cutoff c [m] (default: 300 for seed001, 631 for seed000)")

@@ -13,13 +13,6 @@ namespace mptrack::sim {
 
 namespace {
 
-/// True for a built-in raw-ADC name or a file with the raw-ADC schema.
-bool is_adc_scenario(const std::string& name, const std::string& file) {
-  if (!file.empty()) return adc::is_adc_scenario_file(file);
-  adc::AdcScenario s;
-  return adc::builtin_adc_scenario(name, s);
-}
-
 void apply_target_overrides(const RunOptions& o, scenario::ScenarioSpec& spec) {
   using scenario::Swerling;
   if (o.swerling == 0 && o.snr1_text.empty() && o.snr2_text.empty()) return;
@@ -93,9 +86,7 @@ int run_default_command(const RunOptions& o) {
 }
 
 int run_adc_command(const std::string& name, const std::string& file, AdcRunConfig cfg) {
-  if (!file.empty()) {
-    cfg.scenario = adc::load_adc_scenario_file(file);
-  } else if (!adc::builtin_adc_scenario(name, cfg.scenario)) {
+  if (!load_adc_scenario(name, file, cfg.scenario)) {
     std::fprintf(stderr, "error: unknown raw-ADC scenario '%s'\n", name.c_str());
     return 2;
   }

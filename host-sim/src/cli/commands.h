@@ -65,5 +65,10 @@ Subcommand add_scenario_export_command(CLI::App& app);
 extern const char* const kMfbpParamHelp;
 /// "10/3", "20" or "3.5" -> double; throws std::runtime_error naming `flag`.
 double parse_ratio(const std::string& text, const char* flag);
+/// True for a built-in raw-ADC name (file "") or a file with the raw-ADC schema.
+bool is_adc_scenario(const std::string& name, const std::string& file);
+/// The raw-ADC scenario of the file (if given, throws on errors) or the
+/// built-in `name`; false if `name` is not a built-in raw-ADC scenario.
+bool load_adc_scenario(const std::string& name, const std::string& file, adc::AdcScenario& out);
 
 }  // namespace mptrack::sim

@@ -7,19 +7,25 @@
 
 namespace mptrack::sim {
 
+namespace {
+
+/// Nearest rank on sorted, non-empty v: the smallest value with at least q
+/// of the samples at or below it.
+double nearest_rank(const std::vector<double>& v, double q) {
+  const double r = std::ceil(q * static_cast<double>(v.size()));
+  const std::size_t i = r < 1.0 ? 0 : static_cast<std::size_t>(r) - 1;
+  return v[std::min(i, v.size() - 1)];
+}
+
+}  // namespace
+
 LatencyStats latency_stats(std::vector<double> v) {
   LatencyStats s;
   s.count = v.size();
   if (v.empty()) return s;
   std::sort(v.begin(), v.end());
-  // Nearest rank: the smallest value with at least q of the samples at or below it.
-  const auto rank = [&](double q) {
-    const double r = std::ceil(q * static_cast<double>(v.size()));
-    const std::size_t i = r < 1.0 ? 0 : static_cast<std::size_t>(r) - 1;
-    return v[std::min(i, v.size() - 1)];
-  };
-  s.p50_us = rank(0.50);
-  s.p99_us = rank(0.99);
+  s.p50_us = nearest_rank(v, 0.50);
+  s.p99_us = nearest_rank(v, 0.99);
   s.max_us = v.back();
   double sum = 0.0;
   for (double x : v) sum += x;
@@ -48,6 +54,10 @@ std::uint64_t measurement_checksum(const scenario::SimScan& scan, std::uint64_t 
   return h;
 }
 
+double Summary::object_rmse_quantile(double q) const {
+  return object_rmse_m.empty() ? 0.0 : nearest_rank(object_rmse_m, q);
+}
+
 void Summary::count_status(Status st) {
   ++step_status[to_string(st)];
   if (st == Status::kPartial) {
@@ -62,6 +72,10 @@ void Summary::count_status(Status st) {
 Aggregator::Aggregator(const SummaryHeader& h) {
   static_cast<SummaryHeader&>(sum_) = h;
   sum_.ospa_per_scan.assign(h.scans, 0.0);
+  sum_.confirmed_mean_per_scan.assign(h.scans, 0.0);
+  sum_.confirmed_std_per_scan.assign(h.scans, 0.0);
+  sum_.truths_per_scan.assign(h.scans, 0.0);
+  confirmed_sq_.assign(h.scans, 0.0);
 }
 
 void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunRecord& rec,
@@ -80,12 +94,41 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   for (std::uint32_t k = 1; k <= sum_.scans; ++k) {
     const ScanMetrics& m = metrics[k - 1];
     sum_.ospa_per_scan[k - 1] += m.ospa / static_cast<double>(sum_.runs);
+    const double confirmed = static_cast<double>(m.confirmed);
+    sum_.confirmed_mean_per_scan[k - 1] += confirmed;  // sums here, means in summary()
+    confirmed_sq_[k - 1] += confirmed * confirmed;
+    sum_.truths_per_scan[k - 1] += static_cast<double>(m.truths);
     for (const TrackOut& t : rec.by_scan[k - 1].tracks) {
       if (t.confirmed) found.insert(t.id);
     }
     if (k >= sum_.eval_first_scan && k <= sum_.eval_last_scan) add_eval_scan(m);
   }
   tracks_found_ += static_cast<double>(found.size());
+  add_object_errors(scans, metrics);
+}
+
+void Aggregator::add_object_errors(const std::vector<scenario::SimScan>& scans,
+                                   const std::vector<ScanMetrics>& metrics) {
+  struct Tally {
+    double sum_d2 = 0.0;
+    std::uint32_t n = 0;
+  };
+  std::map<std::uint32_t, Tally> objects;  // target id -> matched errors of this run
+  for (std::uint32_t k = sum_.eval_first_scan; k <= sum_.eval_last_scan && k <= sum_.scans; ++k) {
+    for (const scenario::TruthState& t : scans[k - 1].truth) objects[t.target_id];
+    for (const ObjectError& e : metrics[k - 1].matched) {
+      Tally& tally = objects[e.target_id];
+      tally.sum_d2 += e.distance_m * e.distance_m;
+      ++tally.n;
+    }
+  }
+  for (const auto& [id, tally] : objects) {
+    if (tally.n == 0) {
+      ++sum_.objects_never_matched;
+    } else {
+      sum_.object_rmse_m.push_back(std::sqrt(tally.sum_d2 / static_cast<double>(tally.n)));
+    }
+  }
 }
 
 void Aggregator::add_eval_scan(const ScanMetrics& m) {
@@ -125,6 +168,14 @@ Summary Aggregator::summary() const {
   s.tracks_found_per_run = s.runs > 0 ? tracks_found_ / static_cast<double>(s.runs) : 0.0;
   s.mean_measurements = delivered_ > 0 ? measurements_ / static_cast<double>(delivered_) : 0.0;
   s.latency = latency_stats(latency_us_);
+  const double runs = s.runs > 0 ? static_cast<double>(s.runs) : 1.0;
+  for (std::size_t k = 0; k < s.confirmed_mean_per_scan.size(); ++k) {
+    const double mean = s.confirmed_mean_per_scan[k] / runs;
+    s.confirmed_mean_per_scan[k] = mean;
+    s.confirmed_std_per_scan[k] = std::sqrt(std::max(0.0, confirmed_sq_[k] / runs - mean * mean));
+    s.truths_per_scan[k] /= runs;
+  }
+  std::sort(s.object_rmse_m.begin(), s.object_rmse_m.end());
   return s;
 }
 

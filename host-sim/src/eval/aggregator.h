@@ -65,6 +65,14 @@ struct Summary : SummaryHeader {
   std::uint64_t eval_scan_count = 0;    ///< runs x evaluation scans
   LatencyStats latency;                 ///< step() of every scan given to the tracker
   std::vector<double> ospa_per_scan;    ///< mean over runs, index scan-1 [m]
+  std::vector<double> confirmed_mean_per_scan;  ///< confirmed tracks, mean over runs, index scan-1
+  std::vector<double> confirmed_std_per_scan;   ///< ... their standard deviation over runs (population)
+  std::vector<double> truths_per_scan;          ///< targets alive, mean over runs, index scan-1
+  /// Per (run, target) RMSE of its track's position over the evaluation
+  /// scans where the OSPA assignment matched it within c, sorted ascending:
+  /// the empirical CDF of seed 004 Fig. 5 [m].
+  std::vector<double> object_rmse_m;
+  std::uint64_t objects_never_matched = 0;  ///< (run, target) pairs alive but never matched within c
   std::uint64_t step_errors = 0;        ///< step()/flush() calls returning an error (not kOk, kPartial, kCapacityExceeded)
   std::uint64_t steps_partial = 0;      ///< kPartial: some measurements rejected (see counters)
   std::uint64_t steps_capacity = 0;     ///< kCapacityExceeded: an internal cap was hit (see counters)
@@ -72,6 +80,8 @@ struct Summary : SummaryHeader {
   TrackerCounters counters;             ///< summed over runs
   std::uint64_t measurement_checksum = kChecksumSeed;  ///< of every measurement the tracker was given, in order
 
+  /// The q-quantile of object_rmse_m by nearest rank (0 if empty) [m].
+  double object_rmse_quantile(double q) const;
   /// Tallies one step()/flush() status into step_status and the three counts.
   void count_status(Status st);
   /// step()/flush() calls that returned anything but kOk.
@@ -90,6 +100,7 @@ class Aggregator {
 
  private:
   void add_eval_scan(const ScanMetrics& m);
+  void add_object_errors(const std::vector<scenario::SimScan>& scans, const std::vector<ScanMetrics>& metrics);
 
   Summary sum_;  ///< header, tallies and counts; means are formed in summary()
   double ospa_ = 0.0, gospa_ = 0.0, loc_ = 0.0, missed_pow_ = 0.0, false_pow_ = 0.0;
@@ -97,6 +108,7 @@ class Aggregator {
   double measurements_ = 0.0, tracks_found_ = 0.0;
   std::uint64_t delivered_ = 0;
   std::vector<double> latency_us_;
+  std::vector<double> confirmed_sq_;  ///< sum over runs of confirmed^2, index scan-1
 };
 
 }  // namespace mptrack::sim

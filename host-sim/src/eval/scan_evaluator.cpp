@@ -64,6 +64,11 @@ ScanMetrics ScanEvaluator::evaluate(const scenario::SimScan& scan, const Estimat
   for (std::size_t j = 0; j < tracks.size(); ++j) {
     if (!match.estimate_within_cutoff(j)) ++m.false_tracks;
   }
+  for (std::size_t i = 0; i < truths.size(); ++i) {
+    if (!match.truth_within_cutoff(i)) continue;
+    const std::size_t j = static_cast<std::size_t>(match.truth_to_estimate(i));
+    m.matched.push_back(ObjectError{scan.truth[i].target_id, (truths[i] - tracks[j]).norm()});
+  }
   score_car(scan, track_refs, m);
   return m;
 }

@@ -21,6 +21,12 @@ constexpr double kOspaCutoff_m = 631.0;  ///< seed 000 OSPA/GOSPA cutoff c [m]
 constexpr double kOspaOrder = 2.0;       ///< seed 000 OSPA/GOSPA order p
 constexpr std::size_t kMaxEvalPoints = 256;
 
+/// A truth the OSPA assignment matched to a confirmed track within c.
+struct ObjectError {
+  std::uint32_t target_id = 0;
+  double distance_m = 0.0;         ///< position error of its track [m]
+};
+
 struct ScanMetrics {
   double ospa = 0.0;               ///< [m]
   double gospa = 0.0;              ///< [m]
@@ -35,6 +41,7 @@ struct ScanMetrics {
   std::uint32_t car_total = 0;     ///< truths with a measurement in this scan
   std::uint32_t car_correct = 0;   ///< ... whose matched track picked exactly that measurement
   std::uint32_t car_id_correct = 0;  ///< ... picked by a track labelled with that target (identity CAR)
+  std::vector<ObjectError> matched;  ///< truths within c of their OSPA-assigned track (per-object RMSE)
 };
 
 class ScanEvaluator {

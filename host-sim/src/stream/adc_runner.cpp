@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -39,13 +40,13 @@ nlohmann::ordered_json lat_json(const LatencyStats& s) {
 
 namespace {
 
-/// Raw-ADC statistics on top of the aggregator's: frontend.csv, OSPA by
-/// phase, track start delay, confirmed tracks per frame, stage latencies.
+/// Raw-ADC statistics on top of the aggregator's, per tracker: OSPA by
+/// phase, track start delay, stage latencies; frontend.csv (first tracker).
 class AdcRunObserver final : public RunObserver {
  public:
-  AdcRunObserver(const AdcScanSource& source, std::uint32_t runs, const std::string& out_dir, std::int64_t csv_runs)
-      : source_(source), runs_(runs), csv_runs_(csv_runs) {
-    cardinality_.assign(source.num_scans(), 0.0);
+  AdcRunObserver(const AdcScanSource& source, std::size_t trackers, const std::string& out_dir,
+                 std::int64_t csv_runs)
+      : source_(source), csv_runs_(csv_runs), per_tracker_(trackers) {
     if (out_dir.empty()) return;
     fe_csv_.open(out_dir + "/frontend.csv");
     if (!fe_csv_) throw std::runtime_error(out_dir + "/frontend.csv: cannot write");
@@ -53,56 +54,65 @@ class AdcRunObserver final : public RunObserver {
                "tracker_us,frame_us,queue_us\n";
   }
 
-  void on_run(std::size_t /*tracker*/, const std::vector<scenario::SimScan>& scans, const RunRecord& rec,
+  void on_run(std::size_t tracker, const std::vector<scenario::SimScan>& scans, const RunRecord& rec,
               const std::vector<ScanMetrics>& metrics) override {
     const adc::AdcScenario& sc = source_.scenario();
+    PerTracker& p = per_tracker_[tracker];
     std::map<std::uint32_t, bool> started;
     for (std::uint32_t k = 1; k <= sc.num_frames; ++k) {
       const ScanMetrics& m = metrics[k - 1];
-      cardinality_[k - 1] += static_cast<double>(m.confirmed) / static_cast<double>(runs_);
-      for (const adc::EvalPhase& p : sc.phases) {
-        if (k < p.first_frame || k > p.last_frame) continue;
-        phase_sum_[p.name] += m.ospa;
-        ++phase_n_[p.name];
+      for (const adc::EvalPhase& ph : sc.phases) {
+        if (k < ph.first_frame || k > ph.last_frame) continue;
+        p.phase_sum[ph.name] += m.ospa;
+        ++p.phase_n[ph.name];
       }
-      note_track_starts(k, scans[k - 1], rec.by_scan[k - 1], started);
+      note_track_starts(p, k, scans[k - 1], rec.by_scan[k - 1], started);
     }
     // A drone never picked up counts its whole life as delay.
     for (const adc::DroneSpec& d : sc.drones) {
       if (!started[d.id]) {
-        delay_sum_[d.id] += static_cast<double>(d.death_frame - d.birth_frame + 1);
-        ++delay_n_[d.id];
+        p.delay_sum[d.id] += static_cast<double>(d.death_frame - d.birth_frame + 1);
+        ++p.delay_n[d.id];
       }
     }
     const std::vector<FrameRecord>& recs = source_.frame_records();
-    if (fe_csv_.is_open() && (csv_runs_ < 0 || static_cast<std::int64_t>(rec.run) < csv_runs_)) {
+    if (tracker == 0 && fe_csv_.is_open() && (csv_runs_ < 0 || static_cast<std::int64_t>(rec.run) < csv_runs_)) {
       write_frontend_rows(rec.run, recs);
     }
-    records_.insert(records_.end(), recs.begin(), recs.end());
+    p.records.insert(p.records.end(), recs.begin(), recs.end());
   }
 
-  void finish(AdcSummary& out) const {
-    for (const auto& [name, v] : phase_sum_) out.ospa_by_phase[name] = v / static_cast<double>(phase_n_.at(name));
-    for (const auto& [id, v] : delay_sum_) out.start_delay[id] = v / static_cast<double>(delay_n_.at(id));
-    out.cardinality_per_frame = cardinality_;
-    out.stages.range = stats_of(records_, &FrameRecord::range_us);
-    out.stages.doppler = stats_of(records_, &FrameRecord::doppler_us);
-    out.stages.angle = stats_of(records_, &FrameRecord::angle_us);
-    out.stages.cfar = stats_of(records_, &FrameRecord::cfar_us);
-    out.stages.tracker = stats_of(records_, &FrameRecord::tracker_us);
-    out.stages.frame = stats_of(records_, &FrameRecord::frame_us);
-    out.stages.queue = stats_of(records_, &FrameRecord::queue_us);
+  void finish(std::size_t tracker, AdcSummary& out) const {
+    const PerTracker& p = per_tracker_[tracker];
+    for (const auto& [name, v] : p.phase_sum) out.ospa_by_phase[name] = v / static_cast<double>(p.phase_n.at(name));
+    for (const auto& [id, v] : p.delay_sum) out.start_delay[id] = v / static_cast<double>(p.delay_n.at(id));
+    out.cardinality_per_frame = out.base.confirmed_mean_per_scan;
+    out.stages.range = stats_of(p.records, &FrameRecord::range_us);
+    out.stages.doppler = stats_of(p.records, &FrameRecord::doppler_us);
+    out.stages.angle = stats_of(p.records, &FrameRecord::angle_us);
+    out.stages.cfar = stats_of(p.records, &FrameRecord::cfar_us);
+    out.stages.tracker = stats_of(p.records, &FrameRecord::tracker_us);
+    out.stages.frame = stats_of(p.records, &FrameRecord::frame_us);
+    out.stages.queue = stats_of(p.records, &FrameRecord::queue_us);
     std::vector<double> v;
-    for (const FrameRecord& r : records_) {
+    for (const FrameRecord& r : p.records) {
       if (r.processed) v.push_back(r.range_us + r.doppler_us + r.angle_us + r.cfar_us);
     }
     out.stages.frontend = latency_stats(std::move(v));
   }
 
  private:
+  struct PerTracker {
+    std::map<std::string, double> phase_sum;
+    std::map<std::string, std::uint64_t> phase_n;
+    std::map<std::uint32_t, double> delay_sum;
+    std::map<std::uint32_t, std::uint32_t> delay_n;
+    std::vector<FrameRecord> records;
+  };
+
   /// Track start delay: the first frame with a confirmed track within c.
-  void note_track_starts(std::uint32_t k, const scenario::SimScan& scan, const EstimateOut& est,
-                         std::map<std::uint32_t, bool>& started) {
+  void note_track_starts(PerTracker& p, std::uint32_t k, const scenario::SimScan& scan, const EstimateOut& est,
+                         std::map<std::uint32_t, bool>& started) const {
     const adc::AdcScenario& sc = source_.scenario();
     for (const auto& t : scan.truth) {
       if (started[t.target_id]) continue;
@@ -111,8 +121,8 @@ class AdcRunObserver final : public RunObserver {
           started[t.target_id] = true;
           for (const adc::DroneSpec& d : sc.drones) {
             if (d.id == t.target_id) {
-              delay_sum_[d.id] += static_cast<double>(k - d.birth_frame);
-              ++delay_n_[d.id];
+              p.delay_sum[d.id] += static_cast<double>(k - d.birth_frame);
+              ++p.delay_n[d.id];
             }
           }
           break;
@@ -133,15 +143,9 @@ class AdcRunObserver final : public RunObserver {
   }
 
   const AdcScanSource& source_;
-  std::uint32_t runs_ = 1;
   std::int64_t csv_runs_ = -1;
   std::ofstream fe_csv_;
-  std::vector<double> cardinality_;
-  std::map<std::string, double> phase_sum_;
-  std::map<std::string, std::uint64_t> phase_n_;
-  std::map<std::uint32_t, double> delay_sum_;
-  std::map<std::uint32_t, std::uint32_t> delay_n_;
-  std::vector<FrameRecord> records_;
+  std::vector<PerTracker> per_tracker_;
 };
 
 void finish_frontend(const FrontEndTotals& t, AdcSummary& out) {
@@ -156,38 +160,61 @@ void finish_frontend(const FrontEndTotals& t, AdcSummary& out) {
 
 }  // namespace
 
-AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
+std::vector<AdcSummary> run_adc_loop(const AdcRunConfig& cfg, const std::vector<std::string>& trackers,
+                                     bool run_outputs) {
   adc::AdcScenario sc = cfg.scenario;
   truncate_frames(sc, cfg.frames);
   const std::string err = adc::validate(sc);
   if (!err.empty()) throw std::runtime_error("scenario " + sc.name + ": " + err);
   if (!(cfg.rate_hz >= 0.0)) throw std::runtime_error("--rate must be >= 0");
   LoopConfig loop = one_tracker_loop(cfg, sc.name);
+  loop.trackers = trackers;
+  if (trackers.size() > 1) loop.progress_label = "compare " + sc.name;
   loop.factory = &make_adc_tracker;
   loop.ospa_cutoff_m = sc.ospa_cutoff_m;
+  loop.ospa_order = sc.ospa_order;
   check_loop_config(loop);  // before the output directory is created
 
   AdcScanSource source(sc, cfg.seed, cfg.rate_hz, cfg.consumer_delay_us);
-  RunOutputs outputs(cfg, source.spec());
-  AdcRunObserver adc_stats(source, cfg.runs, cfg.out_dir, cfg.csv_runs);
-  std::vector<RunObserver*> observers = outputs.observers();
+  std::unique_ptr<RunOutputs> outputs;
+  std::vector<RunObserver*> observers;
+  if (run_outputs) {
+    outputs = std::make_unique<RunOutputs>(cfg, source.spec());
+    observers = outputs->observers();
+  } else if (!cfg.out_dir.empty()) {
+    std::filesystem::create_directories(cfg.out_dir);
+  }
+  AdcRunObserver adc_stats(source, trackers.size(), cfg.out_dir, cfg.csv_runs);
   observers.push_back(&adc_stats);
 
-  AdcSummary out;
-  out.base = run_loop(source, loop, observers).front();
-  out.rate_hz = cfg.rate_hz;
-  adc_stats.finish(out);
-  finish_frontend(source.totals(), out);
+  const std::vector<Summary> base = run_loop(source, loop, observers);
+  std::vector<AdcSummary> out(base.size());
+  for (std::size_t t = 0; t < base.size(); ++t) {
+    out[t].base = base[t];
+    out[t].rate_hz = cfg.rate_hz;
+    out[t].ospa_cutoff_m = sc.ospa_cutoff_m;
+    out[t].ospa_order = sc.ospa_order;
+    out[t].phases = sc.phases;
+    adc_stats.finish(t, out[t]);
+    finish_frontend(source.totals(), out[t]);
+  }
+  if (outputs) {
+    char title[200];
+    std::snprintf(title, sizeof title, "%s / %s, raw ADC (run 0; OSPA c = %g m, mean of %u runs)", sc.name.c_str(),
+                  trackers.front().c_str(), sc.ospa_cutoff_m, cfg.runs);
+    outputs->write_plot(out.front().base.ospa_per_scan, title);
+  }
+  source.print_stage_profile();
+  return out;
+}
+
+AdcSummary run_adc_monte_carlo(const AdcRunConfig& cfg) {
+  AdcSummary out = run_adc_loop(cfg, {cfg.tracker}, true).front();
   if (!cfg.out_dir.empty()) {
     std::ofstream f(cfg.out_dir + "/summary.json");
     if (!f) throw std::runtime_error(cfg.out_dir + "/summary.json: cannot write");
     f << adc_summary_to_json(out).dump(2) << "\n";
   }
-  char title[200];
-  std::snprintf(title, sizeof title, "%s / %s, raw ADC (run 0; OSPA c = %g m, mean of %u runs)", sc.name.c_str(),
-                cfg.tracker.c_str(), sc.ospa_cutoff_m, cfg.runs);
-  outputs.write_plot(out.base.ospa_per_scan, title);
-  source.print_stage_profile();
   return out;
 }
 
@@ -208,6 +235,10 @@ nlohmann::ordered_json adc_summary_to_json(const AdcSummary& s) {
                    {"drone_detection_rate", s.drone_detection_rate},
                    {"range_error_rms_m", s.range_error_rms_m},
                    {"bearing_error_rms_deg", s.bearing_error_rms_deg}};
+  j["ospa"] = {{"cutoff_m", s.ospa_cutoff_m}, {"order_p", s.ospa_order}};
+  nlohmann::ordered_json spans = nlohmann::ordered_json::array();
+  for (const adc::EvalPhase& p : s.phases) spans.push_back({{"name", p.name}, {"frames", {p.first_frame, p.last_frame}}});
+  j["phases"] = spans;
   j["ospa_by_phase"] = s.ospa_by_phase;
   nlohmann::ordered_json d = nlohmann::ordered_json::object();
   for (const auto& [id, v] : s.start_delay) d[std::to_string(id)] = v;

@@ -37,6 +37,8 @@ struct StageLatency {
 struct AdcSummary {
   Summary base;                    ///< harness summary (OSPA with c = scenario.ospa_cutoff_m)
   double rate_hz = 0.0;
+  double ospa_cutoff_m = 0.0, ospa_order = 0.0;  ///< the scenario's OSPA (c [m], p)
+  std::vector<adc::EvalPhase> phases;            ///< the scenario's named frame intervals
   StageLatency stages;
   StreamCounters ring;             ///< summed over runs
   double mean_detections = 0.0;    ///< per processed frame
@@ -45,11 +47,19 @@ struct AdcSummary {
   double bearing_error_rms_deg = 0.0;
   std::map<std::string, double> ospa_by_phase;     ///< mean OSPA over runs x the phase's frames [m]
   std::map<std::uint32_t, double> start_delay;     ///< drone id -> mean frames from birth to a confirmed track within c
-  std::vector<double> cardinality_per_frame;       ///< mean confirmed tracks per frame (index frame-1)
+  std::vector<double> cardinality_per_frame;       ///< mean confirmed tracks per frame (index frame-1; = base.confirmed_mean_per_scan)
 };
 
-/// Runs everything (throws std::runtime_error on a bad configuration).
+/// Runs everything for config.tracker and writes the run outputs
+/// (throws std::runtime_error on a bad configuration).
 AdcSummary run_adc_monte_carlo(const AdcRunConfig& config);
+
+/// The Monte Carlo loop over `trackers` on identical frames (each tracker
+/// sees the same synthesised cubes of run r). run_outputs: the CSVs and
+/// plot of the single-tracker command (first tracker); otherwise only
+/// frontend.csv (of the first tracker) is written under config.out_dir.
+std::vector<AdcSummary> run_adc_loop(const AdcRunConfig& config, const std::vector<std::string>& trackers,
+                                     bool run_outputs);
 
 nlohmann::ordered_json adc_summary_to_json(const AdcSummary& s);
 
