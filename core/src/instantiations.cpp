@@ -7,6 +7,9 @@
 #include "mptrack/caps.h"
 #include "mptrack/cbmember/cbmember_filter.h"
 #include "mptrack/frontend/front_end.h"
+#include "mptrack/frontend/mimo_spectrum.h"
+#include "mptrack/model/mimo_atom.h"
+#include "mptrack/model/mimo_range_angle_map.h"
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/measurement.h"
 #include "mptrack/metrics/assignment.h"
@@ -29,6 +32,14 @@ template class OspaMetric<float, DefaultCaps::kMaxTargets>;
 template class GospaMetric<float, DefaultCaps::kMaxTargets>;
 template class GnnTracker<float, DefaultCaps>;
 template class GnnTracker<float, SmallBoardCaps>;
+
+// Raw-frame signal model of seed 004 (whitened spectrum, atoms, residual map)
+template class frontend::MimoSpectrum<float, frontend::Seed004RadarCaps>;
+template class model::MimoAtomBasis<float, 9, frontend::Seed004RadarCaps::kNumInBandBins>;
+template class model::MimoRangeAngleMap<float, 9, frontend::Seed004RadarCaps::kNumInBandBins, 96, 64>;
+template model::AtomProjection<float> model::atom_project(
+    const model::MimoAtomBasis<float, 9, frontend::Seed004RadarCaps::kNumInBandBins>&,
+    const model::MimoAtom<float, 9, frontend::Seed004RadarCaps::kNumInBandBins>&, const float*, const float*, bool);
 
 // MIMO front end (seed 004 and the large Doppler configuration), float and int16 cubes
 template class frontend::FrontEnd<frontend::Seed004RadarCaps>;

@@ -23,6 +23,9 @@ struct Seed004RadarCaps {
   static constexpr std::size_t kNumChirps = 1;       ///< chirps per Tx per frame (1: no Doppler FFT)
   static constexpr std::size_t kNumAngleBins = 64;   ///< angle FFT length (zero-padded beams)
   static constexpr std::size_t kMaxDetections = 64;  ///< measurements per frame
+  /// In-band fast-time DFT bins kept by the whitened spectrum (mimo_spectrum.h):
+  /// k = -96..95 at 125 kHz, +-12 MHz around the 20 MHz chirp (99.4 % of its energy).
+  static constexpr std::size_t kNumInBandBins = 192;
 };
 
 /// A Doppler-capable automotive-class configuration (benchmark size):
