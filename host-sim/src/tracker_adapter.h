@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "mptrack/adc/adc_scenario.h"
+#include "run/frame_input.h"
 #include "mptrack/scenario/generator.h"
 #include "mptrack/scenario/scenario_spec.h"
 #include "mptrack/status.h"
@@ -59,6 +61,14 @@ class TrackerAdapter {
   virtual Status step(const scenario::SimScan& scan, std::vector<EstimateOut>& out) = 0;
   /// End of data: appends every estimate still held back.
   virtual Status flush(std::vector<EstimateOut>& out) = 0;
+  /// What the tracker consumes on a raw-ADC scenario (run/frame_input.h).
+  virtual FrameInput frame_input() const { return FrameInput::kCfarDetections; }
+  /// FrameInput::kRawFrame trackers: one raw frame (scan: its number, time
+  /// and truth, which only an oracle may look at). Others never get a frame.
+  virtual Status step_frame(const RawFrame& /*frame*/, const scenario::SimScan& /*scan*/,
+                            std::vector<EstimateOut>& /*out*/) {
+    return Status::kInvalidArgument;
+  }
   virtual TrackerCounters counters() const = 0;
 };
 

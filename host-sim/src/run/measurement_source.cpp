@@ -26,8 +26,8 @@ void MeasurementSource::begin_run(std::uint32_t run) {
   }
 }
 
-void MeasurementSource::deliver(const ScanStep& step) {
-  for (const scenario::SimScan& s : scans_) step(s);
+void MeasurementSource::deliver(const ScanStep& step, FrameInput /*input: always detections*/) {
+  for (const scenario::SimScan& s : scans_) step(s, nullptr);
 }
 
 }  // namespace mptrack::sim

@@ -23,6 +23,7 @@ std::unique_ptr<TrackerAdapter> make_initialised(const LoopConfig& cfg, const st
   setup.spec = spec;
   setup.clutter_scale = cfg.clutter_scale;
   setup.mfbp_params = cfg.mfbp_params;
+  setup.raw_scenario = cfg.raw_scenario;
   error = tracker->init(setup);
   if (!error.empty()) throw std::runtime_error("tracker " + name + ": " + error);
   return tracker;
@@ -69,17 +70,18 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
   rec.run = run;
   rec.latency_us.assign(n, 0.0);
   std::vector<EstimateOut> finals;
-  source.deliver([&](const scenario::SimScan& s) {
+  const FrameInput input = tracker.frame_input();
+  source.deliver([&](const scenario::SimScan& s, const RawFrame* frame) {
     rec.delivered.push_back(s.scan);
     const auto t0 = std::chrono::steady_clock::now();
-    const Status st = tracker.step(s, finals);
+    const Status st = frame != nullptr ? tracker.step_frame(*frame, s, finals) : tracker.step(s, finals);
     const auto t1 = std::chrono::steady_clock::now();
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     rec.latency_us[s.scan - 1] = us;
     rec.statuses.push_back(st);
     if (progress != nullptr) progress->tick();
     return us;
-  });
+  }, input);
   rec.statuses.push_back(tracker.flush(finals));
   rec.counters = tracker.counters();
   rec.by_scan = estimates_by_scan(finals, rec.delivered, n);

@@ -35,6 +35,7 @@ struct LoopConfig {
   double ospa_order = kOspaOrder;        ///< OSPA/GOSPA p
   std::string progress_label;
   bool progress = true;                  ///< progress bar on stderr
+  std::shared_ptr<const adc::AdcScenario> raw_scenario;  ///< given to the adapters (TrackerSetup)
 };
 
 /// What every one-tracker Monte Carlo command takes (measurement level,

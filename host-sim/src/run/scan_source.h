@@ -11,11 +11,14 @@
 
 #include "mptrack/scenario/generator.h"
 #include "mptrack/scenario/scenario_spec.h"
+#include "run/frame_input.h"
 
 namespace mptrack::sim {
 
 /// Runs the tracker on one scan; returns the wall time of its step() [us].
-using ScanStep = std::function<double(const scenario::SimScan& scan)>;
+/// `frame` is the raw frame behind the scan when the tracker asked for
+/// FrameInput::kRawFrame, else nullptr.
+using ScanStep = std::function<double(const scenario::SimScan& scan, const RawFrame* frame)>;
 
 class ScanSource {
  public:
@@ -28,8 +31,9 @@ class ScanSource {
   virtual void begin_run(std::uint32_t run) = 0;
   /// Hands the run's scans to `step` in scan order; a source may skip a
   /// scan (a dropped frame). May be called again for the next tracker: every
-  /// call sees the same data.
-  virtual void deliver(const ScanStep& step) = 0;
+  /// call sees the same data. `input`: what the tracker consumes (raw-ADC
+  /// sources; a measurement source always gives its detections).
+  virtual void deliver(const ScanStep& step, FrameInput input) = 0;
   /// The run's scans (index scan-1) with truth and origins, after deliver().
   virtual const std::vector<scenario::SimScan>& scans() const = 0;
 };
@@ -43,7 +47,7 @@ class MeasurementSource final : public ScanSource {
   MeasurementSource(scenario::ScenarioSpec spec, std::uint64_t seed, double clutter_scale);
   const scenario::ScenarioSpec& spec() const override { return spec_; }
   void begin_run(std::uint32_t run) override;
-  void deliver(const ScanStep& step) override;
+  void deliver(const ScanStep& step, FrameInput input) override;
   const std::vector<scenario::SimScan>& scans() const override { return scans_; }
 
  private:

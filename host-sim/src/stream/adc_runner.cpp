@@ -171,6 +171,7 @@ std::vector<AdcSummary> run_adc_loop(const AdcRunConfig& cfg, const std::vector<
   loop.trackers = trackers;
   if (trackers.size() > 1) loop.progress_label = "compare " + sc.name;
   loop.factory = &make_adc_tracker;
+  loop.raw_scenario = std::make_shared<const adc::AdcScenario>(sc);
   loop.ospa_cutoff_m = sc.ospa_cutoff_m;
   loop.ospa_order = sc.ospa_order;
   check_loop_config(loop);  // before the output directory is created

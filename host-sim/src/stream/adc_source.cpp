@@ -112,7 +112,7 @@ void AdcScanSource::begin_run(std::uint32_t run) {
   }
 }
 
-void AdcScanSource::deliver(const ScanStep& step) {
+void AdcScanSource::deliver(const ScanStep& step, FrameInput input) {
   const frontend::FrontEndParams fp = adc::frontend_params_for(sc_);
   ParamError where;
   if (frontend::FrontEnd<adc::AdcCaps>::validate(fp, &where) != Status::kOk) {
@@ -126,7 +126,7 @@ void AdcScanSource::deliver(const ScanStep& step) {
   opt.rate_hz = rate_hz_;
   const StreamCounters rc = run_stream(
       *ring, sc_.num_frames, opt, [&](std::uint32_t k, StreamFrame& slot) { slot.cube = cubes_[k - 1]; },
-      [&](const StreamFrame& f, std::uint64_t queue_ns) { consume(f, queue_ns, step); });
+      [&](const StreamFrame& f, std::uint64_t queue_ns) { consume(f, queue_ns, step, input); });
   totals_.ring.frames_offered += rc.frames_offered;
   totals_.ring.frames_pushed += rc.frames_pushed;
   totals_.ring.frames_processed += rc.frames_processed;
@@ -135,39 +135,42 @@ void AdcScanSource::deliver(const ScanStep& step) {
   label_run();
 }
 
-void AdcScanSource::consume(const StreamFrame& f, std::uint64_t queue_ns, const ScanStep& step) {
+void AdcScanSource::consume(const StreamFrame& f, std::uint64_t queue_ns, const ScanStep& step, FrameInput input) {
   const std::uint64_t t0 = stream_now_ns();
   FrameRecord& r = records_[f.frame - 1];
   r.processed = true;
   r.queue_us = static_cast<double>(queue_ns) * 1e-3;
+  scenario::SimScan& s = scans_[f.frame - 1];
+  if (input == FrameInput::kCfarDetections) detect_cfar(f, s, r);
+  const std::uint64_t t1 = stream_now_ns();
+  r.detections = static_cast<std::uint32_t>(s.measurements.size());
+  r.tracker_us = step(s, input == FrameInput::kRawFrame ? &f.cube : nullptr);
+  stage_profile_.poll();
+  r.frame_us = static_cast<double>(t1 - t0) * 1e-3 + r.tracker_us;
+  if (consumer_delay_us_ > 0) std::this_thread::sleep_for(std::chrono::microseconds(consumer_delay_us_));
+}
+
+void AdcScanSource::detect_cfar(const StreamFrame& f, scenario::SimScan& s, FrameRecord& r) {
   frontend::FrontEndStageTimes times;
   times.clock = &ns_clock;
   const Status fst = fe_->fe.process(f.cube, fe_->scan, &times);
   stage_profile_.poll();
-  const std::uint64_t t1 = stream_now_ns();
   r.range_us = times.ticks[0] * 1e-3;
   r.doppler_us = times.ticks[1] * 1e-3;
   r.angle_us = times.ticks[2] * 1e-3;
   r.cfar_us = times.ticks[3] * 1e-3;
   r.over_cap = static_cast<std::uint32_t>(fe_->fe.last_frame_dropped());
-  scenario::SimScan& s = scans_[f.frame - 1];
   // kCapacityExceeded: the strongest detections were kept (the rest are
   // counted in over_cap); the frame is still usable.
-  if (fst == Status::kOk || fst == Status::kCapacityExceeded) {
-    for (const Measurement<float>& m : fe_->scan.measurements) {
-      scenario::SimMeasurement y;
-      y.range_m = static_cast<double>(m.range_m);
-      y.azimuth_rad = static_cast<double>(m.azimuth_rad);
-      y.amplitude = static_cast<double>(m.amplitude);
-      y.origin = scenario::Origin{scenario::OriginKind::kClutter, 0};
-      s.measurements.push_back(y);
-    }
+  if (fst != Status::kOk && fst != Status::kCapacityExceeded) return;
+  for (const Measurement<float>& m : fe_->scan.measurements) {
+    scenario::SimMeasurement y;
+    y.range_m = static_cast<double>(m.range_m);
+    y.azimuth_rad = static_cast<double>(m.azimuth_rad);
+    y.amplitude = static_cast<double>(m.amplitude);
+    y.origin = scenario::Origin{scenario::OriginKind::kClutter, 0};
+    s.measurements.push_back(y);
   }
-  r.detections = static_cast<std::uint32_t>(s.measurements.size());
-  r.tracker_us = step(s);
-  stage_profile_.poll();
-  r.frame_us = static_cast<double>(t1 - t0) * 1e-3 + r.tracker_us;
-  if (consumer_delay_us_ > 0) std::this_thread::sleep_for(std::chrono::microseconds(consumer_delay_us_));
 }
 
 void AdcScanSource::label_run() {

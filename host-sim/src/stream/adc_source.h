@@ -1,9 +1,11 @@
 // Raw-ADC scans as a scan source (run/scan_source.h): per run,
 //   1. begin_run: synthesise every frame and its truth (not timed);
 //   2. deliver:   stream the frames through the SPSC ring (stream_pipeline.h)
-//                 at rate_hz; the consumer runs FrontEnd::process (range,
-//                 Doppler, angle, CFAR stages timed) and hands the detections
-//                 to the tracker step; a dropped frame reaches no tracker;
+//                 at rate_hz; the consumer hands the tracker step what it
+//                 consumes (run/frame_input.h): FrontEnd::process's detections
+//                 (range, Doppler, angle, CFAR stages timed), the SBL
+//                 detector's (timed) or the frame itself; a dropped frame
+//                 reaches no tracker;
 //   3. then labels each detection with the nearest drone (truth only, after
 //                 the tracker saw the frame) for CAR and front-end accuracy.
 #pragma once
@@ -44,7 +46,7 @@ class AdcScanSource final : public ScanSource {
   ~AdcScanSource() override;
   const scenario::ScenarioSpec& spec() const override { return view_; }
   void begin_run(std::uint32_t run) override;
-  void deliver(const ScanStep& step) override;
+  void deliver(const ScanStep& step, FrameInput input) override;
   const std::vector<scenario::SimScan>& scans() const override { return scans_; }
 
   const adc::AdcScenario& scenario() const { return sc_; }
@@ -56,7 +58,9 @@ class AdcScanSource final : public ScanSource {
 
  private:
   class FrontEndBox;
-  void consume(const StreamFrame& f, std::uint64_t queue_ns, const ScanStep& step);
+  void consume(const StreamFrame& f, std::uint64_t queue_ns, const ScanStep& step, FrameInput input);
+  /// Runs the matched filter + CFAR front end on f into s (stage times into r).
+  void detect_cfar(const StreamFrame& f, scenario::SimScan& s, FrameRecord& r);
   void label_run();
 
   adc::AdcScenario sc_;
