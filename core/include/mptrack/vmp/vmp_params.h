@@ -28,6 +28,10 @@ struct VmpParams {
   double survival_probability = 0.95;  ///< p_s, (0, 1)
   double birth_probability = 1e-8;     ///< p_b, (0, 1); birth test logit xi > logit(1 - p_b)
   double prune_existence = 0.1;        ///< delta_minus: tracks below are deleted, (0, 1)
+  bool predictive_existence_prior = true;   ///< false: the mean-field prior log-odds of seed 004
+                                           ///< eq. (17), xi (logit p_s - logit p_b) + logit p_b; true:
+                                           ///< the Bernoulli-filter prediction logit(p_s xi + p_b (1 - xi))
+                                           ///< (docs/algorithms/vmp.md §Corrections)
   double amplitude_prior_precision = 1.0;  ///< lambda_p in whitened units (1 = 1 / mean RCS) [-]
   // Dynamics (seed 004 eqs. (4)-(5), (23)-(25)).
   double gamma_shape_zeta = 4.0;         ///< zeta: prior shape zeta/2 of each lambda_j [-], > 0

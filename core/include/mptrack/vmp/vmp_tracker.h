@@ -205,10 +205,17 @@ class VmpTracker {
       t.chain.push(dt);
       t.chain.x = t.x_gamma;  // until the data message arrives
       t.chain.p = t.p_gamma;
-      t.g = t.xi_prev * (logit_ps_ - logit_pb_) + logit_pb_;
+      t.g = prior_logit(t.xi_prev);
       t.logit_xi = t.g;
       set_atom(t);
     }
+  }
+
+  T prior_logit(T xi_prev) const {
+    if (!params_.predictive_existence_prior) return xi_prev * (logit_ps_ - logit_pb_) + logit_pb_;
+    const T ps = static_cast<T>(params_.survival_probability);
+    const T pb = static_cast<T>(params_.birth_probability);
+    return vmp::logit(ps * xi_prev + pb * (T(1) - xi_prev));  // in [p_b, p_s]: finite
   }
 
   // Gamma_kk with the delta-method trace tr(P_pos Re{J^H J}) (seed 004 eq. (34)).
