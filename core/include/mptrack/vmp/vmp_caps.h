@@ -19,7 +19,7 @@ struct VmpDefaultCaps {
 struct VmpSmallCaps {
   static constexpr std::size_t kMaxTargets = 4;
   static constexpr std::size_t kWindow = 8;
-  static constexpr std::size_t kMaxBirthsPerFrame = 2;
+  static constexpr std::size_t kMaxBirthsPerFrame = 4;
   static constexpr std::size_t kMapRangeCells = 96;
   static constexpr std::size_t kMapAngleCells = 64;
 };

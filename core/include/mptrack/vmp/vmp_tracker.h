@@ -63,6 +63,8 @@ class VmpTracker {
 
   static constexpr std::size_t kMaxTracks = Caps::kMaxTargets;
   static constexpr std::size_t kWindow = Caps::kWindow;
+  /// Distinct birth-map peaks examined per birth (docs/algorithms/vmp.md §Births).
+  static constexpr std::size_t kPeakTries = 3;
   using Spectrum = frontend::MimoSpectrum<T, RadarCaps>;
   static constexpr std::size_t kNV = Spectrum::kNumVirtual;
   static constexpr std::size_t kKB = Spectrum::kNumBins;
@@ -340,42 +342,63 @@ class VmpTracker {
   }
 
   // Step 5: greedy births on the residual (seed 004 Alg. 2); see docs/algorithms/vmp.md §Births.
+  // Each round tries the best kPeakTries distinct map peaks (a refused peak, e.g. a
+  // strong track's unexplained remainder, must not hide a new object elsewhere)
+  // and accepts the first candidate whose existence log-odds exceed logit(1 - p_b).
   void births(bool refresh) {
     if (refresh) amplitudes_and_existence();
-    const T nve = static_cast<T>(kNV) * basis_.e_u();
     for (std::size_t b = 0; b < params_.max_births_per_frame; ++b) {
-      residual(Cx{T(1), T(0)}, kMaxTracks, [&](std::size_t j) {
-        return model::cx_scale(tracks_[j].mu, vmp::sigmoid(tracks_[j].logit_xi));
-      });
-      // Incremental objective |s^H r|^2 / rho_S - ln rho_S, rho_S ~ ||s||^2 + lambda_p.
-      const auto peak = map_.best(basis_, buf_re_.data(), buf_im_.data(), [&](T r, T, T p) {
-        const T rho2 = basis_.rho(r) * basis_.rho(r);
-        const T den = rho2 * nve + lambda_p_;
-        return rho2 * p / den - dmath::dlog(den);
-      });
-      if (!peak.found) return;
-      const T x0 = peak.range_m * peak.sin_t;
-      const T y0 = peak.range_m * std::sqrt(T(1) - peak.sin_t * peak.sin_t);
-      model::make_atom(basis_, x0, y0, T(-1), cand_);
-      const T prec = model::atom_norm2(basis_, cand_) + lambda_p_;
-      const Cx mu = model::cx_scale(model::atom_inner(cand_, buf_re_.data(), buf_im_.data()), T(1) / prec);
-      const T e = model::cx_norm2(mu) + T(1) / prec;
-      for (std::size_t i = 0; i < kSize; ++i) {  // r~ = mu^* r (candidate with xi = 1)
-        const T re = buf_re_[i], im = buf_im_[i];
-        buf_re_[i] = mu.re * re + mu.im * im;
-        buf_im_[i] = mu.re * im - mu.im * re;
+      bool born = false;
+      std::size_t n_excl = 0;
+      for (std::size_t attempt = 0; attempt < kPeakTries && !born; ++attempt) {
+        residual(Cx{T(1), T(0)}, kMaxTracks, [&](std::size_t j) {
+          return model::cx_scale(tracks_[j].mu, vmp::sigmoid(tracks_[j].logit_xi));
+        });
+        const T nve = static_cast<T>(kNV) * basis_.e_u();
+        // Incremental objective |s^H r|^2 / rho_S - ln rho_S, rho_S ~ ||s||^2 + lambda_p.
+        const auto peak = map_.best(
+            basis_, buf_re_.data(), buf_im_.data(),
+            [&](T r, T, T p) {
+              const T rho2 = basis_.rho(r) * basis_.rho(r);
+              const T den = rho2 * nve + lambda_p_;
+              return rho2 * p / den - dmath::dlog(den);
+            },
+            excl_.data(), n_excl, kExclRange_m, kExclSin);
+        if (!peak.found) return;
+        excl_[n_excl++] = peak;
+        const vmp::PositionMessage<T> m = refine_candidate(peak);
+        if (!m.valid || !in_region(m.m(0), m.m(1), T(0))) continue;
+        if (!(candidate_logit(m) > logit_birth_)) continue;
+        if (tracks_.full()) {
+          ++counters_.track_cap_hits;
+          return;
+        }
+        add_track(m);
+        amplitudes_and_existence();
+        born = true;
       }
-      const auto m = vmp::data_message(basis_, x0, y0, buf_re_.data(), buf_im_.data(), T(1), e, msg_, cand_, trial_);
-      if (!m.valid || !in_region(m.m(0), m.m(1), T(0))) return;
-      model::make_atom(basis_, m.m(0), m.m(1), T(-1), cand_);
-      if (!(candidate_logit(m) > logit_birth_)) return;
-      if (tracks_.full()) {
-        ++counters_.track_cap_hits;
-        return;
-      }
-      add_track(m);
-      amplitudes_and_existence();
+      if (!born) return;
     }
+  }
+
+  // Gauss-Newton on the residual in buf_ from a map peak, with the candidate's
+  // concentrated amplitude (xi = 1); leaves the refined atom in cand_.
+  vmp::PositionMessage<T> refine_candidate(const model::MapPeak<T>& peak) {
+    const T x0 = peak.range_m * peak.sin_t;
+    const T y0 = peak.range_m * std::sqrt(T(1) - peak.sin_t * peak.sin_t);
+    model::make_atom(basis_, x0, y0, T(-1), cand_);
+    const T prec = model::atom_norm2(basis_, cand_) + lambda_p_;
+    const Cx mu = model::cx_scale(model::atom_inner(cand_, buf_re_.data(), buf_im_.data()), T(1) / prec);
+    const T e = model::cx_norm2(mu) + T(1) / prec;
+    for (std::size_t i = 0; i < kSize; ++i) {  // r~ = mu^* r
+      const T re = buf_re_[i], im = buf_im_[i];
+      buf_re_[i] = mu.re * re + mu.im * im;
+      buf_im_[i] = mu.re * im - mu.im * re;
+    }
+    vmp::PositionMessage<T> m =
+        vmp::data_message(basis_, x0, y0, buf_re_.data(), buf_im_.data(), T(1), e, msg_, cand_, trial_);
+    if (m.valid) model::make_atom(basis_, m.m(0), m.m(1), T(-1), cand_);
+    return m;
   }
 
   // Existence log-odds of the candidate in cand_ against the current tracks
@@ -458,6 +481,11 @@ class VmpTracker {
   std::array<T, kSize> buf_re_{};
   std::array<T, kSize> buf_im_{};
   std::array<std::size_t, kMaxTracks> order_{};
+  std::array<model::MapPeak<T>, kPeakTries> excl_{};
+  /// Exclusion half-widths around a refused peak: half the range resolution
+  /// c / (2 BW) and half the array beamwidth 2 / N_V in sin theta.
+  static constexpr T kExclRange_m = T(3.75);
+  static constexpr T kExclSin = T(1) / T(9);
   Atom cand_{};
   Atom trial_{};
   Vec4 lambda0_ = Vec4::Ones();
