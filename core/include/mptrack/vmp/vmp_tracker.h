@@ -20,7 +20,7 @@
 //      SNR (|mu|^2 + C_kk) Gamma_kk; confirmed = xi >= delta_minus).
 // A frame with a NaN/Inf sample is not used: tracks coast (prediction only),
 // counted in measurements_invalid (measurements_in counts frames), kPartial.
-// Memory: everything is a member (about 180 KiB for float and VmpDefaultCaps);
+// Memory: everything is a member (117 KB for float and VmpDefaultCaps);
 // place the tracker in static storage.
 #pragma once
 
