@@ -20,6 +20,7 @@
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
+#include "mptrack/vmp/vmp_tracker.h"
 
 namespace mptrack {
 
@@ -40,6 +41,10 @@ template class model::MimoRangeAngleMap<float, 9, frontend::Seed004RadarCaps::kN
 template model::AtomProjection<float> model::atom_project(
     const model::MimoAtomBasis<float, 9, frontend::Seed004RadarCaps::kNumInBandBins>&,
     const model::MimoAtom<float, 9, frontend::Seed004RadarCaps::kNumInBandBins>&, const float*, const float*, bool);
+
+// VMP direct tracker on raw seed 004 frames (float, default and small caps)
+template class VmpTracker<float, VmpDefaultCaps, frontend::Seed004RadarCaps>;
+template class VmpTracker<float, VmpSmallCaps, frontend::Seed004RadarCaps>;
 
 // MIMO front end (seed 004 and the large Doppler configuration), float and int16 cubes
 template class frontend::FrontEnd<frontend::Seed004RadarCaps>;

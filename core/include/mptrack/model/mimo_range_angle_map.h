@@ -57,9 +57,13 @@ class MimoRangeAngleMap {
     return n_range_ > 0 && n_angle_ > 0;
   }
 
-  /// The cell maximising score(range_m, sin_t, |B|^2) over the grid.
+  /// The cell maximising score(range_m, sin_t, |B|^2) over the grid, skipping
+  /// cells within (|dr| < r_excl, |du| < u_excl) of the n_excl excluded
+  /// peaks (the next-best distinct peak after a refused candidate).
   template <class Score>
-  MapPeak<T> best(const MimoAtomBasis<T, NV, KB>& b, const T* r_re, const T* r_im, Score&& score) const {
+  MapPeak<T> best(const MimoAtomBasis<T, NV, KB>& b, const T* r_re, const T* r_im, Score&& score,
+                  const MapPeak<T>* excl = nullptr, std::size_t n_excl = 0, T r_excl = T(0),
+                  T u_excl = T(0)) const {
     MapPeak<T> peak;
     std::array<Cx<T>, NV> mf{};
     for (std::size_t g = 0; g < n_range_; ++g) {
@@ -77,6 +81,12 @@ class MimoRangeAngleMap {
         Cx<T> beam{};
         for (std::size_t v = 0; v < NV; ++v) beam = cx_add(beam, cx_mul(steer_[h * NV + v], mf[v]));
         const T u = u_min_ + static_cast<T>(h) * u_step_;
+        bool skip = false;
+        for (std::size_t e = 0; e < n_excl; ++e) {
+          const T dr = range - excl[e].range_m, du = u - excl[e].sin_t;
+          skip = skip || ((dr < r_excl && -dr < r_excl) && (du < u_excl && -du < u_excl));
+        }
+        if (skip) continue;
         const T p = cx_norm2(beam);
         const T sc = score(range, u, p);
         if (!peak.found || sc > peak.score) {
