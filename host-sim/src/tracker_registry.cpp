@@ -4,6 +4,7 @@
 #include "mptrack/caps.h"
 #include "mptrack/cbmember/cbmember_filter.h"
 #include "mptrack/gnn/gnn_tracker.h"
+#include "trackers/vmp_adapter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/phd/phd_filter.h"
 
@@ -36,6 +37,7 @@ constexpr Entry kEntries[] = {
     {"cbmember-uniform", "IGGM CBMeMBer, uniform clutter rate and power estimated"},
     {"cbmember-known", "IGGM CBMeMBer, uniform clutter of known rate (fixed model)"},
     {"cbmember-ki", "CBMeMBer kinematics only (no amplitude), clutter map estimated"},
+    {"vmp", "raw-ADC scenarios only: seed 004 VMP tracker on the raw MIMO frames (no detector)"},
     {"oracle", "test oracle: reports each target-originated measurement as a track (uses truth)"},
 };
 
@@ -68,6 +70,7 @@ std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::strin
     if (name == "oracle") return make_oracle_tracker();
     if (name.rfind("mfbp", 0) == 0) return make_mfbp_tracker(name);
     if (name == "gnn") return make_gnn_tracker();
+    if (name == "vmp") return make_vmp_adapter();
     if (auto t = make_iggm_tracker(name)) return t;
   }
   error = "unknown tracker '" + name + "'";

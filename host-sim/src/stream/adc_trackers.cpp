@@ -9,6 +9,7 @@
 #include "tracker_registry.h"
 #include "trackers/core_adapter.h"
 #include "trackers/mfbp_param_override.h"
+#include "trackers/vmp_adapter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/gnn/gnn_tracker.h"
 
@@ -154,6 +155,7 @@ std::unique_ptr<TrackerAdapter> make_adc_tracker(const std::string& name, std::s
   if (name == "mfbp") return std::make_unique<AdcMfbpAdapter>(false);
   if (name == "mfbp-filter") return std::make_unique<AdcMfbpAdapter>(true);
   if (name == "gnn") return std::make_unique<AdcGnnAdapter>();
+  if (name == "vmp") return make_vmp_adapter();
   return make_tracker(name, error);
 }
 

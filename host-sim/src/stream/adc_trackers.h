@@ -3,8 +3,9 @@
 // (10 Hz frames, metre-scale noise, a few m/s) instead of seed 000's
 // 10-50 km targets:
 //   mfbp, mfbp-filter  MF-BP smoother / online filter (seed 000 algorithm)
-//   gnn                the seed 004 detect-then-track baseline (seed 004 Sec. V-A:
-//                      GNN + CV Kalman, 3-of-5 confirmation, 5-miss deletion)
+//   gnn                GNN + CV Kalman, 3-of-5 confirmation, 5-miss deletion (seed 004
+//                      Sec. V-A's tracker) on the matched filter + CFAR detections
+//   vmp                seed 004's VMP tracker on the raw frames (no detector)
 // Any other registered name (e.g. oracle) gets the generic adapter.
 #pragma once
 
