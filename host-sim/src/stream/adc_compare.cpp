@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "stream/adc_trackers.h"
 #include "svg_plot.h"
 #include "writers.h"
 
@@ -18,13 +19,6 @@ std::string fmt(const char* f, double x) {
   char b[64];
   std::snprintf(b, sizeof b, f, x);
   return b;
-}
-
-/// What each raw-frame pipeline feeds its tracker (the table's legend).
-std::string pipeline_of(const std::string& tracker) {
-  if (tracker == "vmp") return "raw frames (seed 004 VMP)";
-  if (tracker == "sbl-gnn") return "SBL detections -> GNN + CV Kalman";
-  return "matched filter + CFAR detections -> " + tracker;
 }
 
 void write_frames_csv(const std::string& path, const std::vector<AdcSummary>& rows) {
@@ -99,7 +93,7 @@ std::string adc_compare_to_markdown(const std::vector<AdcSummary>& rows, const A
   s += rule;
   for (const AdcSummary& r : rows) {
     const Summary& x = r.base;
-    s += "| " + x.tracker + " | " + pipeline_of(x.tracker) + " | " + fmt("%.2f", x.mean_ospa) + " |";
+    s += "| " + x.tracker + " | " + pipeline_description(x.tracker) + " | " + fmt("%.2f", x.mean_ospa) + " |";
     for (const adc::EvalPhase& p : sc.phases) {
       const auto it = r.ospa_by_phase.find(p.name);
       s += " " + (it == r.ospa_by_phase.end() ? std::string("-") : fmt("%.2f", it->second)) + " |";

@@ -256,8 +256,8 @@ void print_adc_summary(const AdcSummary& a, const std::string& out_dir) {
   } else {
     std::snprintf(rate, sizeof rate, "lossless (as fast as consumed)");
   }
-  std::printf("scenario %s (raw ADC -> front end -> %s): %u run(s) x %u frames, seed %llu, rate %s\n",
-              s.scenario.c_str(), s.tracker.c_str(), s.runs, s.scans, static_cast<unsigned long long>(s.seed), rate);
+  std::printf("scenario %s (raw ADC: %s): %u run(s) x %u frames, seed %llu, rate %s\n",
+              s.scenario.c_str(), pipeline_description(s.tracker).c_str(), s.runs, s.scans, static_cast<unsigned long long>(s.seed), rate);
   std::printf("  mean OSPA %.2f m (c = 10 m, p = 2)   confirmed tracks per frame %.2f (truths %.2f)   "
               "distinct confirmed tracks per run %.1f\n",
               s.mean_ospa, s.mean_confirmed_tracks, s.mean_truths, s.tracks_found_per_run);
@@ -265,16 +265,21 @@ void print_adc_summary(const AdcSummary& a, const std::string& out_dir) {
   for (const auto& [name, v] : a.ospa_by_phase) std::printf(" %s %.2f", name.c_str(), v);
   std::printf("\n  track start delay [frames]:");
   for (const auto& [id, v] : a.start_delay) std::printf(" drone %u: %.1f", id, v);
-  std::printf("\n  front end: %.2f detections/frame, drone detection rate %.3f, rms error %.2f m / %.2f deg\n",
-              a.mean_detections, a.drone_detection_rate, a.range_error_rms_m, a.bearing_error_rms_deg);
+  std::printf("\n");
+  if (a.stages.frontend.max_us > 0.0 || a.mean_detections > 0.0) {
+    std::printf("  detections: %.2f per frame, drone detection rate %.3f, rms error %.2f m / %.2f deg\n",
+                a.mean_detections, a.drone_detection_rate, a.range_error_rms_m, a.bearing_error_rms_deg);
+  }
   const auto row = [](const char* name, const LatencyStats& l) {
     std::printf("    %-15s p50 %8.1f  p99 %8.1f  max %8.1f us\n", name, l.p50_us, l.p99_us, l.max_us);
   };
   std::printf("  per-frame latency (host):\n");
-  row("range", a.stages.range);
-  row("doppler", a.stages.doppler);
-  row("angle", a.stages.angle);
-  row("cfar+peaks", a.stages.cfar);
+  if (a.stages.frontend.max_us > 0.0) {  // else the tracker consumed the raw frame
+    row("range", a.stages.range);
+    row("doppler", a.stages.doppler);
+    row("angle", a.stages.angle);
+    row("cfar+peaks", a.stages.cfar);
+  }
   row("tracker", a.stages.tracker);
   row("frame total", a.stages.frame);
   std::printf("  ring: offered %llu, pushed %llu, processed %llu, dropped %llu\n",

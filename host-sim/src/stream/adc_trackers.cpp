@@ -151,6 +151,12 @@ class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, Default
 
 }  // namespace
 
+std::string pipeline_description(const std::string& name) {
+  if (name == "vmp") return "raw frames (seed 004 VMP)";
+  if (name == "sbl-gnn") return "SBL detections -> GNN + CV Kalman";
+  return "matched filter + CFAR detections -> " + name;
+}
+
 std::unique_ptr<TrackerAdapter> make_adc_tracker(const std::string& name, std::string& error) {
   if (name == "mfbp") return std::make_unique<AdcMfbpAdapter>(false);
   if (name == "mfbp-filter") return std::make_unique<AdcMfbpAdapter>(true);

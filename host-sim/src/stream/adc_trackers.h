@@ -30,6 +30,10 @@ scenario::ScenarioSpec tracker_view(const adc::AdcScenario& s);
 /// the scenario's variant and pfa): amplitude^2 = P / noise estimate > alpha.
 double cfar_amplitude_threshold(const adc::AdcScenario& s);
 
+/// What the pipeline of tracker `name` feeds it, e.g. "matched filter + CFAR
+/// detections -> gnn" or "raw frames (seed 004 VMP)".
+std::string pipeline_description(const std::string& name);
+
 /// A fresh adapter or nullptr with `error` set.
 std::unique_ptr<TrackerAdapter> make_adc_tracker(const std::string& name, std::string& error);
 
