@@ -8,7 +8,9 @@
 //   B(r_g, u_h) = sum_v exp(-j c_v u_h) MF_v(r_g),
 // so that s(r_g, u_h)^H r = rho~(r_g) B (model/mimo_atom.h). The caller's score
 // sees (r_g, u_h, |B|^2) and the map returns the best cell; cost
-// O(N_R K_B N_V + N_R N_A N_V) complex MACs, no FFT scratch.
+// O(N_R K_B N_V + N_R N_A N_V) complex MACs, no FFT scratch; the delay phasors
+// come from a recurrence over the (uniformly spaced) bins, re-seeded exactly
+// every kReseedBins bins.
 // The beam steering table (N_V x N_A) is built once in init().
 #pragma once
 
@@ -30,7 +32,12 @@ struct MapPeak {
 
 template <class T, std::size_t NV, std::size_t KB, std::size_t kMaxRange, std::size_t kMaxAngle>
 class MimoRangeAngleMap {
+  static_assert(KB >= 2, "the phasor recurrence needs two bins");
+
  public:
+  /// Bins between exact phasor re-seeds in best() (docs/algorithms/vmp.md §Births).
+  static constexpr std::size_t kReseedBins = 16;
+
   /// Grid r = r_min + g r_step (g < kMaxRange, r <= r_max), u = -u_max + h u_step
   /// (h < kMaxAngle, u <= u_max). False if a grid is empty or an argument is not positive.
   bool init(const MimoAtomBasis<T, NV, KB>& b, T r_min, T r_max, T r_step, T u_max, T u_step) {
@@ -70,11 +77,20 @@ class MimoRangeAngleMap {
       const T range = r_min_ + static_cast<T>(g) * r_step_;
       const T tau = T(2) * range / kLightSpeed_mps<T>;
       for (std::size_t v = 0; v < NV; ++v) mf[v] = Cx<T>{};
+      // exp(+j 2 pi f_k tau) by a phasor recurrence over the uniformly spaced
+      // bins, re-seeded exactly every kReseedBins bins (float drift stays
+      // ~kReseedBins ulps): 1 + KB / kReseedBins sincos per range cell
+      // instead of KB, in a fixed order (bit-exact on every target).
+      Cx<T> step{};
+      dmath::dsincos(dmath::kTwoPi<T> * (b.f(1) - b.f(0)) * tau, step.im, step.re);
+      Cx<T> phasor{};
       for (std::size_t k = 0; k < KB; ++k) {
-        T s = T(0);
-        T c = T(1);
-        dmath::dsincos(dmath::kTwoPi<T> * b.f(k) * tau, s, c);
-        const Cx<T> w = cx_cmul(b.u(k), Cx<T>{c, s});  // U_k^* exp(+j 2 pi f_k tau)
+        if (k % kReseedBins == 0) {
+          dmath::dsincos(dmath::kTwoPi<T> * b.f(k) * tau, phasor.im, phasor.re);
+        } else {
+          phasor = cx_mul(phasor, step);
+        }
+        const Cx<T> w = cx_cmul(b.u(k), phasor);  // U_k^* exp(+j 2 pi f_k tau)
         for (std::size_t v = 0; v < NV; ++v) mf[v] = cx_add(mf[v], cx_mul(w, Cx<T>{r_re[v * KB + k], r_im[v * KB + k]}));
       }
       for (std::size_t h = 0; h < n_angle_; ++h) {
