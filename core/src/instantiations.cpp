@@ -9,7 +9,9 @@
 #include "mptrack/frontend/front_end.h"
 #include "mptrack/frontend/mimo_spectrum.h"
 #include "mptrack/model/mimo_atom.h"
+#include "mptrack/model/joint_amplitude.h"
 #include "mptrack/model/mimo_range_angle_map.h"
+#include "mptrack/sbl/sbl_detector.h"
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/measurement.h"
 #include "mptrack/metrics/assignment.h"
@@ -40,6 +42,12 @@ template class model::MimoRangeAngleMap<float, 9, frontend::Seed004RadarCaps::kN
 template model::AtomProjection<float> model::atom_project(
     const model::MimoAtomBasis<float, 9, frontend::Seed004RadarCaps::kNumInBandBins>&,
     const model::MimoAtom<float, 9, frontend::Seed004RadarCaps::kNumInBandBins>&, const float*, const float*, bool);
+
+// SBL detector (seed 004's detect-then-track baseline): float on targets
+template class model::JointAmplitude<float, SblDefaultCaps::kMaxComponents>;
+template class SblDetector<float>;
+template Status SblDetector<float>::process(const frontend::RadarCube<frontend::Seed004RadarCaps>&,
+                                            Scan<float, frontend::Seed004RadarCaps::kMaxDetections>&);
 
 // MIMO front end (seed 004 and the large Doppler configuration), float and int16 cubes
 template class frontend::FrontEnd<frontend::Seed004RadarCaps>;
