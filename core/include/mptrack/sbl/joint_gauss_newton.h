@@ -186,13 +186,11 @@ class JointGaussNewton {
   /// delta = (N + lambda diag N)^-1 g, lambda = 1e-6, raised tenfold (up to 3
   /// times) if the factorisation fails.
   bool solve(std::size_t p) {
+    for (std::size_t i = 0; i < p; ++i) diag_[i] = nrm_[i * kP + i].re;
     T lm = T(1e-6);
     for (int attempt = 0; attempt < 4; ++attempt) {
-      for (std::size_t i = 0; i < p; ++i) {
-        for (std::size_t c = 0; c <= i; ++c) damped_[i * kP + c] = nrm_[i * kP + c];
-        damped_[i * kP + i].re += lm * nrm_[i * kP + i].re;
-      }
-      if (model::complex_cholesky(damped_.data(), p, kP, l_.data())) {
+      for (std::size_t i = 0; i < p; ++i) nrm_[i * kP + i].re = diag_[i] + lm * diag_[i];
+      if (model::complex_cholesky(nrm_.data(), p, kP, l_.data())) {
         std::array<Cx, kP> x{};
         model::complex_cholesky_solve(l_.data(), p, kP, g_.data(), x.data());
         for (std::size_t i = 0; i < p; ++i) delta_[i] = x[i].re;
@@ -205,7 +203,7 @@ class JointGaussNewton {
 
   std::array<std::array<std::array<Cx, 3>, 4>, KMax> w_{};
   std::array<Cx, kP * kP> nrm_{};
-  std::array<Cx, kP * kP> damped_{};
+  std::array<T, kP> diag_{};
   std::array<Cx, kP * kP> l_{};
   std::array<Cx, kP> g_{};
   std::array<T, kP> delta_{};
