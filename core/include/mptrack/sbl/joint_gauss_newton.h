@@ -60,9 +60,7 @@ class JointGaussNewton {
   T step(const Basis& b, Atom* atoms, Cx* mu, const T* gamma, std::size_t n, const T* z_re, const T* z_im, T* r_re,
          T* r_im, T max_step_m) {
     const T cost0 = residual(atoms, mu, gamma, n, z_re, z_im, r_re, r_im);
-    for (std::size_t k = 0; k < n; ++k) column_weights(atoms[k], mu[k], w_[k]);
-    gradient(b, atoms, mu, gamma, n, r_re, r_im);
-    normal_matrix(b, atoms, gamma, n);
+    linearise(b, atoms, mu, gamma, n, r_re, r_im);
     if (!solve(4 * n)) return T(0);
     T largest = T(0);
     for (std::size_t k = 0; k < n; ++k) {
@@ -92,6 +90,18 @@ class JointGaussNewton {
     return T(0);
   }
 
+  /// The normal equations (9) of docs/algorithms/sbl.md at (atoms, mu) with
+  /// residual r = z - sum mu_k s_k: normal(i, j) (lower triangle, i >= j) and
+  /// gradient(i), parameter order (Re mu_k, Im mu_k, x_k, y_k)_k.
+  void linearise(const Basis& b, const Atom* atoms, const Cx* mu, const T* gamma, std::size_t n, const T* r_re,
+                 const T* r_im) {
+    for (std::size_t k = 0; k < n; ++k) column_weights(atoms[k], mu[k], w_[k]);
+    build_gradient(b, atoms, mu, gamma, n, r_re, r_im);
+    normal_matrix(b, atoms, gamma, n);
+  }
+  T normal(std::size_t i, std::size_t j) const { return nrm_[i * kP + j].re; }
+  T gradient(std::size_t i) const { return g_[i].re; }
+
  private:
   /// Weights of the 4 columns of component k on (b0, b1, b2).
   static void column_weights(const Atom& at, Cx mu, std::array<std::array<Cx, 3>, 4>& w) {
@@ -108,7 +118,7 @@ class JointGaussNewton {
   }
 
   /// Re{D^H e} - gamma mu (mu entries).
-  void gradient(const Basis& b, const Atom* atoms, const Cx* mu, const T* gamma, std::size_t n, const T* r_re,
+  void build_gradient(const Basis& b, const Atom* atoms, const Cx* mu, const T* gamma, std::size_t n, const T* r_re,
                 const T* r_im) {
     for (std::size_t k = 0; k < n; ++k) {
       const Atom& at = atoms[k];
