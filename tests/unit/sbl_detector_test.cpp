@@ -222,28 +222,35 @@ TEST_CASE("SBL: validate names the failing field") {
   fails(p, "max_range_m");
 }
 
-TEST_CASE("SBL: process() allocates nothing (float and double)") {
-  Fixture f;
-  const SblEcho e[2] = {{14.5, 25.1, 3.0, 0.3}, {-10.0, 50.0, 2.0, 1.0}};
-  mptrack::test::sbl_scene<Caps>(f.p, e, 2, true, 9, *f.cube);
-  auto fdet = std::make_unique<mptrack::SblDetector<float>>();
-  REQUIRE(fdet->init(f.p) == Status::kOk);
+namespace {
+
+// The double fixture plus a float detector, both on one frame of two echoes in noise.
+struct BothTypes : Fixture {
+  std::unique_ptr<mptrack::SblDetector<float>> fdet = std::make_unique<mptrack::SblDetector<float>>();
   mptrack::Scan<float, 16> fscan;
+  BothTypes() {
+    const SblEcho e[2] = {{14.5, 25.1, 3.0, 0.3}, {-10.0, 50.0, 2.0, 1.0}};
+    mptrack::test::sbl_scene<Caps>(p, e, 2, true, 9, *cube);
+    REQUIRE(fdet->init(p) == Status::kOk);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("SBL: process() allocates nothing (float and double)") {
+  BothTypes f;
   mptrack::test::NoAllocScope guard;
   CHECK(f.det->process(*f.cube, f.scan) == Status::kOk);
-  CHECK(fdet->process(*f.cube, fscan) == Status::kOk);
+  CHECK(f.fdet->process(*f.cube, f.fscan) == Status::kOk);
   CHECK(guard.allocations() == 0);
   CHECK(f.scan.measurements.size() == 2);
-  CHECK(fscan.measurements.size() == 2);
+  CHECK(f.fscan.measurements.size() == 2);
 }
 
 TEST_CASE("SBL: the float detector agrees with the double reference") {
-  Fixture f;
-  const SblEcho e[2] = {{14.5, 25.1, 3.0, 0.3}, {-10.0, 50.0, 2.0, 1.0}};
-  mptrack::test::sbl_scene<Caps>(f.p, e, 2, true, 9, *f.cube);
-  auto fdet = std::make_unique<mptrack::SblDetector<float>>();
-  REQUIRE(fdet->init(f.p) == Status::kOk);
-  mptrack::Scan<float, 16> fscan;
+  BothTypes f;
+  auto& fdet = f.fdet;
+  auto& fscan = f.fscan;
   REQUIRE(f.det->process(*f.cube, f.scan) == Status::kOk);
   REQUIRE(fdet->process(*f.cube, fscan) == Status::kOk);
   REQUIRE(fscan.measurements.size() == f.scan.measurements.size());

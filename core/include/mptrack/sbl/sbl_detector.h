@@ -3,7 +3,7 @@
 // (docs/algorithms/sbl.md). Raw MIMO frame in, polar measurements out, the
 // same shape as frontend::FrontEnd::process so a harness can swap the two:
 //
-//   SblDetector<float> det;                    // place it statically (~60 KB float)
+//   SblDetector<float> det;                    // place it statically (88 KB float)
 //   MPTRACK_TRY(det.init(SblParams{}));         // validates, builds the tables
 //   per frame:
 //     Status s = det.process(cube, scan);      // scan: Scan<float, N>

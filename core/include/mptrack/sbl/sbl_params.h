@@ -55,10 +55,10 @@ struct SblParams {
                                              ///< the component SNR [-]: ln(N_eff / P_FA),
                                              ///< N_eff = 360, P_FA = 1e-3 per frame
   std::size_t max_components = 8;            ///< detections per frame (<= Caps::kMaxComponents)
-  std::size_t max_iterations = 20;           ///< joint re-refinement sweeps per addition
-                                             ///< (<= Caps::kMaxIterations)
-  std::size_t gauss_newton_steps = 8;        ///< Gauss-Newton steps per refinement, 1..32
-  double tolerance_m = 1e-3;                 ///< joint sweeps stop when no position moved more [m]
+  std::size_t max_iterations = 20;           ///< joint iterations (amplitudes + one joint
+                                             ///< Gauss-Newton step) per addition (<= Caps::kMaxIterations)
+  std::size_t gauss_newton_steps = 8;        ///< Gauss-Newton steps of a new component's refinement, 1..32
+  double tolerance_m = 1e-3;                 ///< joint iterations stop when no position moved more [m]
   double max_step_m = 1.0;                   ///< Gauss-Newton step cap [m], > 0
   double max_abs_sample = 1e6;               ///< float cubes: |re| or |im| above this refuses the
                                              ///< frame [cube units], in [1e-6, 1e9] (as the front end)
