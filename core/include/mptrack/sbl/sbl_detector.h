@@ -13,11 +13,11 @@
 // (frontend/mimo_spectrum.h); then, greedily, the peak of the residual
 // range/angle map (model/mimo_range_angle_map.h) becomes a component if its
 // normalised power |s^H r|^2 / ||s||^2 >= eta; its position is refined by
-// Gauss-Newton (sbl/position_refine.h); then joint sweeps: amplitude posterior
-// with per-component precisions gamma_k (model/joint_amplitude.h),
-// 1/gamma_k = |mu_k|^2 + C_kk, and each position re-refined against the
-// residual of the others, until no position moves by tolerance_m or
-// max_iterations sweeps; components whose SNR (|mu_k|^2 + C_kk) ||s_k||^2 < eta
+// Gauss-Newton (sbl/position_refine.h); then joint iterations: amplitude
+// posterior with per-component precisions gamma_k (model/joint_amplitude.h),
+// 1/gamma_k = |mu_k|^2 + C_kk, and one Gauss-Newton step over all amplitudes and
+// positions together (sbl/joint_gauss_newton.h), until no position moves by
+// tolerance_m or max_iterations; components whose SNR (|mu_k|^2 + C_kk) ||s_k||^2 < eta
 // are pruned. Adding stops when the peak is below eta, an added component is
 // pruned, or max_components is reached.
 //
