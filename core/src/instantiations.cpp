@@ -47,7 +47,8 @@ template model::AtomProjection<float> model::atom_project(
 template class model::JointAmplitude<float, SblDefaultCaps::kMaxComponents>;
 template class SblDetector<float>;
 template Status SblDetector<float>::process(const frontend::RadarCube<frontend::Seed004RadarCaps>&,
-                                            Scan<float, frontend::Seed004RadarCaps::kMaxDetections>&);
+                                            Scan<float, frontend::Seed004RadarCaps::kMaxDetections>&,
+                                            frontend::FrontEndStageTimes*);
 
 // MIMO front end (seed 004 and the large Doppler configuration), float and int16 cubes
 template class frontend::FrontEnd<frontend::Seed004RadarCaps>;

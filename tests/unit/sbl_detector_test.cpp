@@ -263,3 +263,30 @@ TEST_CASE("SBL: the float detector agrees with the double reference") {
     CHECK(static_cast<double>(g.snr) == doctest::Approx(d.snr).epsilon(1e-3));
   }
 }
+
+namespace {
+std::uint32_t g_fake_ticks = 0;
+std::uint32_t fake_clock() { return g_fake_ticks += 7; }  // every read advances 7 ticks
+}  // namespace
+
+TEST_CASE("SBL: a full Scan keeps the strongest detections and returns kCapacityExceeded; stage times") {
+  BothTypes f;
+  mptrack::Scan<double, 1> one;
+  mptrack::frontend::FrontEndStageTimes times;
+  times.clock = &fake_clock;
+  CHECK(f.det->process(*f.cube, one, &times) == Status::kCapacityExceeded);
+  REQUIRE(one.measurements.size() == 1);
+  CHECK(f.det->last_frame_dropped() == 1);
+  CHECK(f.det->counters().detections_over_cap == 1);
+  CHECK(f.det->num_detections() == 1);
+  // The kept one is the stronger echo (3x the mean-RCS amplitude at 29 m
+  // against 2x at 51 m).
+  CHECK(std::abs(f.det->detection(0).x_m - 14.5) < 1.0);
+  // Spectrum: one interval (7 ticks); searches: 3 map scans (2 echoes, then
+  // the one below eta) of 7 ticks each; the rest is refinement and output.
+  using Stage = mptrack::frontend::FrontEndStage;
+  CHECK(times.ticks[static_cast<std::size_t>(Stage::kRange)] == 7u);
+  CHECK(times.ticks[static_cast<std::size_t>(Stage::kDoppler)] == 0u);
+  CHECK(times.ticks[static_cast<std::size_t>(Stage::kAngle)] == 21u);
+  CHECK(times.ticks[static_cast<std::size_t>(Stage::kDetect)] > 0u);
+}

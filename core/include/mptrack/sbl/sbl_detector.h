@@ -32,6 +32,7 @@
 
 #include <Eigen/Core>
 
+#include "mptrack/frontend/front_end.h"
 #include "mptrack/frontend/measurement_convert.h"
 #include "mptrack/frontend/mimo_spectrum.h"
 #include "mptrack/frontend/radar_caps.h"
@@ -140,23 +141,38 @@ class SblDetector {
   /// out.has_doppler = false. kNotInitialized before init(); kInvalidInput (out
   /// empty, counted in frames_rejected) if the cube holds NaN/Inf, a sample
   /// beyond max_abs_sample, or only zeros. kCapacityExceeded (out valid) if
-  /// detections did not fit the Scan (counted); kNumericalError (out valid,
-  /// from the components before the failure) if an amplitude precision was not
-  /// positive definite; else kOk.
+  /// detections did not fit the Scan (counted, last_frame_dropped()); kNumericalError
+  /// (out valid, from the components before the failure) if an amplitude
+  /// precision was not positive definite; else kOk.
+  /// times (optional, the front end's type so a harness can swap the two):
+  /// kRange = whitened spectrum, kDoppler = 0, kAngle = residual-map searches,
+  /// kDetect = refinement, pruning and output.
   template <std::size_t N>
-  Status process(const frontend::RadarCube<RadarCaps>& cube, Scan<T, N>& out) {
+  Status process(const frontend::RadarCube<RadarCaps>& cube, Scan<T, N>& out,
+                 frontend::FrontEndStageTimes* times = nullptr) {
     out.measurements.clear();
     out.time_us = cube.time_us;
     out.has_doppler = false;
     last_.clear();
+    last_dropped_ = 0;
     n_ = 0;
+    if (times != nullptr) times->ticks = {};
+    const std::uint32_t t0 = tick(times);
     if (!initialized_ || !frame_ok(cube) || spectrum_.process(cube) != Status::kOk) {
       ++counters_.frames_rejected;
       return initialized_ ? Status::kInvalidInput : Status::kNotInitialized;
     }
-    const Status s = reconstruct();
+    const std::uint32_t t1 = tick(times);
+    std::uint32_t search = 0;
+    const Status s = reconstruct(times, search);
     if (s == Status::kNumericalError) ++counters_.numerical_failures;
     const bool over = emit(out);
+    const std::uint32_t t2 = tick(times);
+    if (times != nullptr) {
+      times->ticks[static_cast<std::size_t>(frontend::FrontEndStage::kRange)] = t1 - t0;
+      times->ticks[static_cast<std::size_t>(frontend::FrontEndStage::kAngle)] = search;
+      times->ticks[static_cast<std::size_t>(frontend::FrontEndStage::kDetect)] = (t2 - t1) - search;
+    }
     ++counters_.frames;
     if (s != Status::kOk) return s;
     return over ? Status::kCapacityExceeded : Status::kOk;
@@ -166,6 +182,8 @@ class SblDetector {
   std::size_t num_detections() const { return last_.size(); }
   const SblDetection<T>& detection(std::size_t i) const { return last_[i]; }
   const SblCounters& counters() const { return counters_; }
+  /// Detections of the last frame dropped because the Scan was full.
+  std::size_t last_frame_dropped() const { return last_dropped_; }
   const Basis& basis() const { return basis_; }
   bool initialized() const { return initialized_; }
 
@@ -246,13 +264,20 @@ class SblDetector {
     return newest_gone;
   }
 
-  /// Greedy addition with joint refinement and pruning (the whole frame).
-  Status reconstruct() {
+  static std::uint32_t tick(const frontend::FrontEndStageTimes* t) {
+    return (t != nullptr && t->clock != nullptr) ? t->clock() : 0u;
+  }
+
+  /// Greedy addition with joint refinement and pruning (the whole frame);
+  /// search_ticks accumulates the residual-map searches.
+  Status reconstruct(const frontend::FrontEndStageTimes* times, std::uint32_t& search_ticks) {
     const T norm = T(1) / (static_cast<T>(kNV) * basis_.e_u());  // |B|^2 -> |s^H r|^2 / ||s||^2
     rebuild_residual();
     while (n_ < params_.max_components) {
+      const std::uint32_t ts = tick(times);
       const model::MapPeak<T> pk =
           map_.best(basis_, res_re_.data(), res_im_.data(), [](T, T, T p) { return p; });
+      search_ticks += tick(times) - ts;
       if (!pk.found || pk.beam_power * norm < eta_) break;
       const T u = pk.sin_t;
       Atom& at = atoms_[n_];
@@ -305,6 +330,7 @@ class SblDetector {
       }
       if (out.measurements.size() >= N) {
         ++counters_.detections_over_cap;
+        ++last_dropped_;
         over = true;
         continue;
       }
@@ -346,6 +372,7 @@ class SblDetector {
   std::array<T, kMaxK> gamma_{};
   std::array<T, kMaxK> e_{};  ///< |mu_k|^2 + C_kk
   std::size_t n_ = 0;
+  std::size_t last_dropped_ = 0;
   StaticVector<SblDetection<T>, kMaxK> last_{};
   SblCounters counters_{};
   SblParams params_{};
