@@ -28,6 +28,17 @@
 
 namespace mptrack::sbl {
 
+/// s_j^H s_k from the stored factors: rho_j rho_k (sum_v a_j^* a_k)(sum_k h_j^* h_k),
+/// the separable Gram of model/mimo_atom.h without its N_V + K_B sin/cos.
+template <class T, std::size_t NV, std::size_t KB>
+model::Cx<T> gram_from_factors(const model::MimoAtom<T, NV, KB>& aj, const model::MimoAtom<T, NV, KB>& ak) {
+  model::Cx<T> a{};
+  for (std::size_t v = 0; v < NV; ++v) a = model::cx_add(a, model::cx_cmul(aj.a[v], ak.a[v]));
+  model::Cx<T> h{};
+  for (std::size_t q = 0; q < KB; ++q) h = model::cx_add(h, model::cx_cmul(aj.h[q], ak.h[q]));
+  return model::cx_scale(model::cx_mul(a, h), aj.rho * ak.rho);
+}
+
 template <class T, std::size_t NV, std::size_t KB, std::size_t KMax>
 class JointGaussNewton {
   using Cx = model::Cx<T>;

@@ -214,7 +214,7 @@ class SblDetector {
     std::array<Cx, kMaxK> c{};
     for (std::size_t k = 0; k < n_; ++k) {
       c[k] = model::atom_inner(atoms_[k], spectrum_.z_re(), spectrum_.z_im());
-      for (std::size_t j = 0; j < k; ++j) amp_.lambda(k, j) = model::atom_gram(basis_, atoms_[k], atoms_[j]);
+      for (std::size_t j = 0; j < k; ++j) amp_.lambda(k, j) = sbl::gram_from_factors(atoms_[k], atoms_[j]);
       amp_.lambda(k, k) = Cx{model::atom_norm2(basis_, atoms_[k]) + gamma_[k], T(0)};
     }
     MPTRACK_TRY(amp_.solve(c.data()));
