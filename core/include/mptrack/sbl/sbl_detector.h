@@ -273,7 +273,9 @@ class SblDetector {
   Status reconstruct(const frontend::FrontEndStageTimes* times, std::uint32_t& search_ticks) {
     const T norm = T(1) / (static_cast<T>(kNV) * basis_.e_u());  // |B|^2 -> |s^H r|^2 / ||s||^2
     rebuild_residual();
-    while (n_ < params_.max_components) {
+    // An addition may prune an older component instead of itself; the cap on
+    // additions keeps such a frame from cycling.
+    for (std::size_t added = 0; n_ < params_.max_components && added < 2 * params_.max_components; ++added) {
       const std::uint32_t ts = tick(times);
       const model::MapPeak<T> pk =
           map_.best(basis_, res_re_.data(), res_im_.data(), [](T, T, T p) { return p; });
