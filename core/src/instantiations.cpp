@@ -9,7 +9,9 @@
 #include "mptrack/frontend/front_end.h"
 #include "mptrack/frontend/mimo_spectrum.h"
 #include "mptrack/model/mimo_atom.h"
+#include "mptrack/model/joint_amplitude.h"
 #include "mptrack/model/mimo_range_angle_map.h"
+#include "mptrack/sbl/sbl_detector.h"
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/measurement.h"
 #include "mptrack/metrics/assignment.h"
@@ -45,6 +47,12 @@ template model::AtomProjection<float> model::atom_project(
 // VMP direct tracker on raw seed 004 frames (float, default and small caps)
 template class VmpTracker<float, VmpDefaultCaps, frontend::Seed004RadarCaps>;
 template class VmpTracker<float, VmpSmallCaps, frontend::Seed004RadarCaps>;
+// SBL detector (seed 004's detect-then-track baseline): float on targets
+template class model::JointAmplitude<float, SblDefaultCaps::kMaxComponents>;
+template class SblDetector<float>;
+template Status SblDetector<float>::process(const frontend::RadarCube<frontend::Seed004RadarCaps>&,
+                                            Scan<float, frontend::Seed004RadarCaps::kMaxDetections>&,
+                                            frontend::FrontEndStageTimes*);
 
 // MIMO front end (seed 004 and the large Doppler configuration), float and int16 cubes
 template class frontend::FrontEnd<frontend::Seed004RadarCaps>;
