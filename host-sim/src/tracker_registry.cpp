@@ -38,6 +38,7 @@ constexpr Entry kEntries[] = {
     {"cbmember-known", "IGGM CBMeMBer, uniform clutter of known rate (fixed model)"},
     {"cbmember-ki", "CBMeMBer kinematics only (no amplitude), clutter map estimated"},
     {"vmp", "raw-ADC scenarios only: seed 004 VMP tracker on the raw MIMO frames (no detector)"},
+    {"sbl-gnn", "raw-ADC scenarios only: SBL detector + GNN + CV Kalman (seed 004 detect-then-track baseline)"},
     {"oracle", "test oracle: reports each target-originated measurement as a track (uses truth)"},
 };
 
@@ -71,6 +72,10 @@ std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::strin
     if (name.rfind("mfbp", 0) == 0) return make_mfbp_tracker(name);
     if (name == "gnn") return make_gnn_tracker();
     if (name == "vmp") return make_vmp_adapter();
+    if (name == "sbl-gnn") {
+      error = "sbl-gnn detects in raw ADC frames: use it on a raw-ADC scenario (seed004-drones, mimo-interference)";
+      return nullptr;
+    }
     if (auto t = make_iggm_tracker(name)) return t;
   }
   error = "unknown tracker '" + name + "'";

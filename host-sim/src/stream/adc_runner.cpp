@@ -274,7 +274,11 @@ void print_adc_summary(const AdcSummary& a, const std::string& out_dir) {
     std::printf("    %-15s p50 %8.1f  p99 %8.1f  max %8.1f us\n", name, l.p50_us, l.p99_us, l.max_us);
   };
   std::printf("  per-frame latency (host):\n");
-  if (a.stages.frontend.max_us > 0.0) {  // else the tracker consumed the raw frame
+  if (a.stages.frontend.max_us > 0.0 && s.tracker == "sbl-gnn") {  // the SBL detector's stages
+    row("spectrum", a.stages.range);
+    row("map searches", a.stages.angle);
+    row("sbl refinement", a.stages.cfar);
+  } else if (a.stages.frontend.max_us > 0.0) {  // else the tracker consumed the raw frame
     row("range", a.stages.range);
     row("doppler", a.stages.doppler);
     row("angle", a.stages.angle);

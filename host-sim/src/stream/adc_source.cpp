@@ -10,7 +10,9 @@
 #include <utility>
 
 #include "mptrack/adc/frontend_config.h"
+#include "mptrack/adc/sbl_config.h"
 #include "mptrack/frontend/front_end.h"
+#include "mptrack/sbl/sbl_detector.h"
 #include "mptrack/math/detmath.h"
 #include "mptrack/validate.h"
 #include "stream/adc_trackers.h"
@@ -85,6 +87,7 @@ scenario::SimScan truth_scan(std::uint32_t k, std::uint64_t time_us, const std::
 class AdcScanSource::FrontEndBox {
  public:
   frontend::FrontEnd<adc::AdcCaps> fe;
+  SblDetector<float> sbl;
   Scan<float, adc::AdcCaps::kMaxDetections> scan;
 };
 
@@ -113,12 +116,20 @@ void AdcScanSource::begin_run(std::uint32_t run) {
 }
 
 void AdcScanSource::deliver(const ScanStep& step, FrameInput input) {
-  const frontend::FrontEndParams fp = adc::frontend_params_for(sc_);
   ParamError where;
-  if (frontend::FrontEnd<adc::AdcCaps>::validate(fp, &where) != Status::kOk) {
-    throw std::runtime_error(std::string("invalid front-end parameter ") + where.field + ": needs " + where.rule);
+  if (input == FrameInput::kCfarDetections) {
+    const frontend::FrontEndParams fp = adc::frontend_params_for(sc_);
+    if (frontend::FrontEnd<adc::AdcCaps>::validate(fp, &where) != Status::kOk) {
+      throw std::runtime_error(std::string("invalid front-end parameter ") + where.field + ": needs " + where.rule);
+    }
+    if (fe_->fe.init(fp) != Status::kOk) throw std::runtime_error("front end init failed");
+  } else if (input == FrameInput::kSblDetections) {
+    const SblParams sp = adc::sbl_params_for(sc_);
+    if (SblDetector<float>::validate(sp, &where) != Status::kOk) {
+      throw std::runtime_error(std::string("invalid SBL detector parameter ") + where.field + ": needs " + where.rule);
+    }
+    if (fe_->sbl.init(sp) != Status::kOk) throw std::runtime_error("SBL detector init failed");
   }
-  if (fe_->fe.init(fp) != Status::kOk) throw std::runtime_error("front end init failed");
   scans_ = truth_scans_;
   records_.assign(sc_.num_frames, FrameRecord{});
   auto ring = std::make_unique<StreamRing>();  // fresh counters per delivery
@@ -141,7 +152,7 @@ void AdcScanSource::consume(const StreamFrame& f, std::uint64_t queue_ns, const 
   r.processed = true;
   r.queue_us = static_cast<double>(queue_ns) * 1e-3;
   scenario::SimScan& s = scans_[f.frame - 1];
-  if (input == FrameInput::kCfarDetections) detect_cfar(f, s, r);
+  if (input != FrameInput::kRawFrame) detect(f, input, s, r);
   const std::uint64_t t1 = stream_now_ns();
   r.detections = static_cast<std::uint32_t>(s.measurements.size());
   r.tracker_us = step(s, input == FrameInput::kRawFrame ? &f.cube : nullptr);
@@ -150,16 +161,18 @@ void AdcScanSource::consume(const StreamFrame& f, std::uint64_t queue_ns, const 
   if (consumer_delay_us_ > 0) std::this_thread::sleep_for(std::chrono::microseconds(consumer_delay_us_));
 }
 
-void AdcScanSource::detect_cfar(const StreamFrame& f, scenario::SimScan& s, FrameRecord& r) {
+void AdcScanSource::detect(const StreamFrame& f, FrameInput input, scenario::SimScan& s, FrameRecord& r) {
   frontend::FrontEndStageTimes times;
   times.clock = &ns_clock;
-  const Status fst = fe_->fe.process(f.cube, fe_->scan, &times);
+  const bool sbl = input == FrameInput::kSblDetections;
+  // SBL stage times use the front end's slots: spectrum, -, map searches, refinement.
+  const Status fst = sbl ? fe_->sbl.process(f.cube, fe_->scan, &times) : fe_->fe.process(f.cube, fe_->scan, &times);
   stage_profile_.poll();
   r.range_us = times.ticks[0] * 1e-3;
   r.doppler_us = times.ticks[1] * 1e-3;
   r.angle_us = times.ticks[2] * 1e-3;
   r.cfar_us = times.ticks[3] * 1e-3;
-  r.over_cap = static_cast<std::uint32_t>(fe_->fe.last_frame_dropped());
+  r.over_cap = static_cast<std::uint32_t>(sbl ? fe_->sbl.last_frame_dropped() : fe_->fe.last_frame_dropped());
   // kCapacityExceeded: the strongest detections were kept (the rest are
   // counted in over_cap); the frame is still usable.
   if (fst != Status::kOk && fst != Status::kCapacityExceeded) return;

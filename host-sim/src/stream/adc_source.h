@@ -59,8 +59,8 @@ class AdcScanSource final : public ScanSource {
  private:
   class FrontEndBox;
   void consume(const StreamFrame& f, std::uint64_t queue_ns, const ScanStep& step, FrameInput input);
-  /// Runs the matched filter + CFAR front end on f into s (stage times into r).
-  void detect_cfar(const StreamFrame& f, scenario::SimScan& s, FrameRecord& r);
+  /// Runs the detector `input` names (front end or SBL) on f into s (stage times into r).
+  void detect(const StreamFrame& f, FrameInput input, scenario::SimScan& s, FrameRecord& r);
   void label_run();
 
   adc::AdcScenario sc_;

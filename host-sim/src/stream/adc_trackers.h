@@ -5,6 +5,8 @@
 //   mfbp, mfbp-filter  MF-BP smoother / online filter (seed 000 algorithm)
 //   gnn                GNN + CV Kalman, 3-of-5 confirmation, 5-miss deletion (seed 004
 //                      Sec. V-A's tracker) on the matched filter + CFAR detections
+//   sbl-gnn            the same GNN on the per-frame SBL detector's detections: seed 004's
+//                      detect-then-track baseline
 //   vmp                seed 004's VMP tracker on the raw frames (no detector)
 // Any other registered name (e.g. oracle) gets the generic adapter.
 #pragma once
