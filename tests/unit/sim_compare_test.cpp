@@ -204,3 +204,32 @@ TEST_CASE("compare on raw ADC: every pipeline sees the same frames and agrees wi
   CHECK(std::filesystem::exists(dir / "rmse.csv"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("compare on raw ADC: vmp consumes the frame itself, sbl-gnn the SBL detector's detections") {
+  AdcRunConfig cfg;
+  REQUIRE(mptrack::adc::builtin_adc_scenario("seed004-drones", cfg.scenario));
+  cfg.frames = 6;
+  cfg.runs = 1;
+  cfg.progress = false;
+  cfg.plot = false;
+  const std::vector<AdcSummary> rows = run_adc_compare(cfg, {"vmp", "sbl-gnn", "gnn"});
+  REQUIRE(rows.size() == 3);
+  // No detection reaches the raw-frame tracker: its checksum is the empty chain's.
+  CHECK(rows[0].base.measurement_checksum == kChecksumSeed);
+  CHECK(rows[0].base.mean_measurements == 0.0);
+  CHECK(rows[0].stages.frontend.max_us == 0.0);
+  CHECK(rows[0].base.counters.scans == 6);
+  // The two detectors give different detections of the same frames.
+  CHECK(rows[1].base.mean_measurements > 0.0);
+  CHECK(rows[1].base.measurement_checksum != rows[2].base.measurement_checksum);
+}
+
+TEST_CASE("compare: the raw-frame trackers refuse a measurement-level scenario with a message") {
+  CompareConfig cfg;
+  cfg.spec = builtin("seed000-s2", 3);
+  cfg.progress = false;
+  cfg.trackers = {"vmp"};
+  CHECK_THROWS_WITH_AS(run_compare(cfg), doctest::Contains("raw ADC"), std::runtime_error);
+  cfg.trackers = {"sbl-gnn"};
+  CHECK_THROWS_WITH_AS(run_compare(cfg), doctest::Contains("raw-ADC scenario"), std::runtime_error);
+}
