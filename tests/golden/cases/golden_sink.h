@@ -109,16 +109,14 @@ template <class T>
 class Slot {
  public:
   T& make() {
-    if (live_) get().~T();
-    T* p = ::new (static_cast<void*>(storage_)) T();
-    live_ = true;
-    return *p;
+    if (object_ != nullptr) object_->~T();
+    object_ = ::new (static_cast<void*>(storage_)) T();
+    return *object_;
   }
 
  private:
-  T& get() { return *std::launder(reinterpret_cast<T*>(storage_)); }
   alignas(T) unsigned char storage_[sizeof(T)];
-  bool live_;
+  T* object_;  // zero-initialised at namespace scope: nothing built yet
 };
 
 /// Bit patterns as unsigned integers (value, not memory layout).

@@ -1,0 +1,14 @@
+// Arm semihosting (the debugger/emulator channel): text out and exit code.
+// qemu-system-arm implements it with -semihosting-config enable=on; on a
+// board under a debug probe the same calls go to the probe's console.
+#pragma once
+
+namespace mptrack::baremetal {
+
+/// Writes a NUL-terminated string (SYS_WRITE0).
+void sh_write(const char* s);
+/// Ends the program: exit status 0 if ok, 1 otherwise (SYS_EXIT with
+/// ADP_Stopped_ApplicationExit / ADP_Stopped_RunTimeErrorUnknown).
+[[noreturn]] void sh_exit(bool ok);
+
+}  // namespace mptrack::baremetal
