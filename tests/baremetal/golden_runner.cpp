@@ -12,12 +12,14 @@
 #include <cstring>
 
 #include "golden_cases.h"
+#include "scan_cost.h"
 #include "semihost.h"
 
 namespace mptrack::test {
 #define MPTRACK_GOLDEN_CASE(name, source) extern "C" const char mptrack_golden_##name[];
 #include "golden_cases.def"
 #undef MPTRACK_GOLDEN_CASE
+extern "C" const char mptrack_golden_scenario_s2_scans1to5[];  // input of the scan-cost report
 }  // namespace mptrack::test
 
 namespace {
@@ -132,5 +134,9 @@ extern "C" int app_main() {
   sh_write(" golden values compared bit for bit in ");
   write_uint(sizeof kCases / sizeof kCases[0]);
   sh_write(" files\n");
+  // Instructions per scan (meaningful under -icount shift=0; scan_cost.cpp).
+  if (!mptrack::baremetal::report_mfbp_scan_cost(mptrack::test::mptrack_golden_scenario_s2_scans1to5)) {
+    sh_write("scan cost: FAIL (input or step)\n");
+  }
   mptrack::baremetal::sh_exit(bad_files == 0);
 }
