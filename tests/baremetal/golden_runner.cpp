@@ -30,6 +30,7 @@ extern "C" const char mptrack_golden_scenario_s2_scans1to5[];  // input of the s
 namespace {
 
 using mptrack::baremetal::sh_write;
+using mptrack::baremetal::sh_write_uint;
 using mptrack::test::GoldenSink;
 
 struct Case {
@@ -44,17 +45,6 @@ constexpr Case kCases[] = {
 #include "golden_cases.def"
 #undef MPTRACK_GOLDEN_CASE
 };
-
-void write_uint(std::uint64_t v) {
-  char buf[24];
-  char* p = buf + sizeof buf;
-  *--p = '\0';
-  do {
-    *--p = static_cast<char>('0' + static_cast<int>(v % 10u));
-    v /= 10u;
-  } while (v != 0u);
-  sh_write(p);
-}
 
 /// Compares each recorded line with the next line of the embedded file.
 class EmbeddedSink final : public GoldenSink {
@@ -96,7 +86,7 @@ class EmbeddedSink final : public GoldenSink {
         sh_write("golden ");
         sh_write(name_);
         sh_write(" line ");
-        write_uint(compared_);
+        sh_write_uint(compared_);
         sh_write(": got '");
         sh_write(got);
         sh_write("'\n");
@@ -127,17 +117,17 @@ extern "C" int app_main() {
     sh_write(ok ? "PASS " : "FAIL ");
     sh_write(c.name);
     sh_write(": ");
-    write_uint(sink.compared());
+    sh_write_uint(sink.compared());
     sh_write(" values compared, ");
-    write_uint(sink.differ());
+    sh_write_uint(sink.differ());
     sh_write(" differ, ");
-    write_uint(unread);
+    sh_write_uint(unread);
     sh_write(" golden lines not reached\n");
   }
   sh_write(bad_files == 0 ? "goldens: PASS, " : "goldens: FAIL, ");
-  write_uint(total);
+  sh_write_uint(total);
   sh_write(" golden values compared bit for bit in ");
-  write_uint(sizeof kCases / sizeof kCases[0]);
+  sh_write_uint(sizeof kCases / sizeof kCases[0]);
   sh_write(" files\n");
 #if defined(__arm__)
   // Instructions per scan (Cortex-M7 SysTick, meaningful under -icount

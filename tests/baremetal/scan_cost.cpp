@@ -43,17 +43,6 @@ void systick_start() {
 std::uint32_t systick_now() { return *kSystCvr; }
 std::uint32_t ticks_since(std::uint32_t start) { return (start - systick_now()) & 0x00FFFFFFu; }
 
-void write_uint(std::uint32_t v) {
-  char buf[12];
-  char* p = buf + sizeof buf;
-  *--p = '\0';
-  do {
-    *--p = static_cast<char>('0' + static_cast<int>(v % 10u));
-    v /= 10u;
-  } while (v != 0u);
-  sh_write(p);
-}
-
 std::uint32_t parse_hex(const char* p) {
   std::uint32_t v = 0;
   for (; (*p >= '0' && *p <= '9') || (*p >= 'a' && *p <= 'f'); ++p) {
@@ -108,9 +97,9 @@ bool report_mfbp_scan_cost(const char* s2_golden_text) {
   __asm__ volatile("1: subs %0, %0, #1\n bne 1b" : "+r"(n) : : "cc");
   const std::uint32_t cal = ticks_since(t0);
   sh_write("icount calibration: 2000000-instruction loop = ");
-  write_uint(cal);
+  sh_write_uint(cal);
   sh_write(" SysTick ticks (");
-  write_uint(cal == 0u ? 0u : 2000000u / cal);
+  sh_write_uint(cal == 0u ? 0u : 2000000u / cal);
   sh_write(" instructions per tick; 40 expected under -icount shift=0)\n");
 
   MfbpParams<float> p = seed000_default_params<float>();
@@ -124,12 +113,12 @@ bool report_mfbp_scan_cost(const char* s2_golden_text) {
     const std::uint32_t ticks = ticks_since(s);
     if (st != Status::kOk) return false;
     sh_write("mfbp filter (float, DefaultCaps) seed000-s2 scan ");
-    write_uint(k);
+    sh_write_uint(k);
     sh_write(": ");
-    write_uint(static_cast<std::uint32_t>(g_scan.measurements.size()));
+    sh_write_uint(static_cast<std::uint32_t>(g_scan.measurements.size()));
     sh_write(" measurements, ");
-    write_uint(ticks * kInsnPerTick);
-    sh_write(" instructions (+-40)\n");
+    sh_write_uint(ticks * kInsnPerTick);
+    sh_write(" instructions (SysTick resolution: 40)\n");
   }
   return true;
 }
