@@ -83,8 +83,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       float f = 0.0f;
       if (avail >= 4) {
         const std::size_t k = (4 * i) % (avail - 3);
-        std::uint32_t bits = 0;
-        std::memcpy(&bits, data + (size - avail) + k, 4);
+        // Little-endian on every host, so a corpus file means the same cube
+        // on big-endian targets too (tests/unit/regression_fuzz_test.cpp).
+        const std::uint8_t* b = data + (size - avail) + k;
+        const std::uint32_t bits = static_cast<std::uint32_t>(b[0]) | (static_cast<std::uint32_t>(b[1]) << 8) |
+                                   (static_cast<std::uint32_t>(b[2]) << 16) | (static_cast<std::uint32_t>(b[3]) << 24);
         std::memcpy(&f, &bits, 4);
         // Half of the float cubes fold huge finite values into range, so
         // that frames both beyond max_abs_sample (refused, F2) and just

@@ -22,6 +22,7 @@ find_program(MPTRACK_SIZE ${MPTRACK_TRIPLE}-size NO_CACHE)
 
 set(MPTRACK_CPU_FLAGS_DEFAULT "-mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard")
 set(MPTRACK_BAREMETAL ON CACHE BOOL "Bare-metal build: core library + minimal image only")
+set(MPTRACK_BAREMETAL_PROFILE M CACHE STRING "Arm profile of the bare-metal target (M or R)")
 
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)

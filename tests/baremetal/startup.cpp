@@ -3,7 +3,7 @@
 #include <cstdint>
 
 extern "C" {
-extern std::uint32_t _data_load, _data_start, _data_end, _bss_start, _bss_end, _stack_top;
+extern std::uint32_t _data_load, _data_start, _data_end, _bss_start, _bss_end, _bss2_start, _bss2_end, _stack_top;
 extern void (*__init_array_start[])();
 extern void (*__init_array_end[])();
 int app_main();
@@ -23,6 +23,8 @@ extern "C" void reset_handler() {
   std::uint32_t* src = &_data_load;
   for (std::uint32_t* dst = &_data_start; dst < &_data_end;) *dst++ = *src++;
   for (std::uint32_t* dst = &_bss_start; dst < &_bss_end;) *dst++ = 0u;
+  // A second .bss range where a linker script splits it over two RAMs.
+  for (std::uint32_t* dst = &_bss2_start; dst < &_bss2_end;) *dst++ = 0u;
   for (auto* ctor = __init_array_start; ctor < __init_array_end; ++ctor) (*ctor)();
   static_cast<void>(app_main());
   default_handler();

@@ -1,138 +1,19 @@
-// Cross-target bit-exactness of the deterministic elementary functions.
-//
-// Every function of mptrack/math/detmath.h is evaluated in float and double
-// on fixed grids of about 200 arguments (two grids of 100, plus its special
-// values), and the result bits are compared with
-// tests/golden/data/detmath.golden. The same file must match on x86-64 and,
-// under qemu, on aarch64 and armhf: that is the proof that no libm,
-// contraction or excess precision leaks in.
-//
-// The grid itself is built with + - * / only (linear steps and geometric
-// ladders by repeated multiplication), so it is bit-identical everywhere too.
-// Each line's label carries the argument's bits: "dexp_f@3f800000 f32 ...".
+// Cross-target bit-exactness of the deterministic elementary functions: the
+// case is tests/golden/cases/detmath.cpp (shared with the bare-metal
+// runner); the result bits are compared with tests/golden/data/detmath.golden.
+// The same file must match on x86-64 and, under qemu, on aarch64, armhf and
+// ppc: that is the proof that no libm, contraction or excess precision leaks in.
 //
 // Regenerate (only after an intended change of results, and review the diff):
 //   MPTRACK_GOLDEN_REGENERATE=1 ctest -R detmath_golden_test
 #include <doctest/doctest.h>
 
-#include <limits>
-#include <string>
-#include <vector>
-
+#include "cases/golden_cases.h"
 #include "golden.h"
-#include "mptrack/math/detmath.h"
-
-namespace dm = mptrack::dmath;
-using mptrack::test::GoldenFile;
-using mptrack::test::hex_bits;
-
-namespace {
-
-constexpr int kGrid = 100;
-
-/// kGrid points from lo to hi, evenly spaced in double, then rounded to T.
-template <class T>
-std::vector<T> linear(double lo, double hi) {
-  std::vector<T> xs;
-  for (int i = 0; i < kGrid; ++i) {
-    const double t = static_cast<double>(i) / static_cast<double>(kGrid - 1);
-    xs.push_back(static_cast<T>(lo + (hi - lo) * t));
-  }
-  return xs;
-}
-
-/// kGrid points from lo, each `ratio` times the previous (computed in double,
-/// so rounding to float happens once per point).
-template <class T>
-std::vector<T> ladder(double lo, double ratio) {
-  std::vector<T> xs;
-  double x = lo;
-  for (int i = 0; i < kGrid; ++i) {
-    xs.push_back(static_cast<T>(x));
-    x *= ratio;
-  }
-  return xs;
-}
-
-template <class T>
-std::vector<T> specials() {
-  const T inf = std::numeric_limits<T>::infinity();
-  return {T(0), -T(0), T(1), T(-1), T(2), T(0.5), std::numeric_limits<T>::denorm_min(),
-          std::numeric_limits<T>::min(), std::numeric_limits<T>::max(), -std::numeric_limits<T>::max(),
-          inf, -inf, std::numeric_limits<T>::quiet_NaN()};
-}
-
-template <class T>
-const char* suffix() {
-  return sizeof(T) == sizeof(float) ? "_f" : "_d";
-}
-
-template <class T, class F>
-void record(GoldenFile& g, const char* name, F f, std::vector<T> xs) {
-  for (const T x : specials<T>()) {
-    xs.push_back(x);
-  }
-  const std::string prefix = std::string(name) + suffix<T>() + "@";
-  for (const T x : xs) {
-    g.add(prefix + hex_bits(x), f(x));
-  }
-}
-
-template <class T>
-void record_all(GoldenFile& g) {
-  const bool f32 = sizeof(T) == sizeof(float);
-  record<T>(g, "dexp", [](T x) { return dm::dexp(x); }, linear<T>(f32 ? -110.0 : -760.0, f32 ? 95.0 : 720.0));
-  record<T>(g, "dexp", [](T x) { return dm::dexp(x); }, linear<T>(-2.0, 2.0));
-  record<T>(g, "dexpm1", [](T x) { return dm::dexpm1(x); }, linear<T>(-45.0, 45.0));
-  record<T>(g, "dexpm1", [](T x) { return dm::dexpm1(x); }, ladder<T>(1e-12, 1.32));
-  record<T>(g, "dlog", [](T x) { return dm::dlog(x); }, ladder<T>(f32 ? 1e-44 : 1e-320, f32 ? 6.8 : 2.0e6));
-  record<T>(g, "dlog", [](T x) { return dm::dlog(x); }, linear<T>(0.25, 4.0));
-  record<T>(g, "dlog1p", [](T x) { return dm::dlog1p(x); }, linear<T>(-0.999, 3.0));
-  record<T>(g, "dlog1p", [](T x) { return dm::dlog1p(x); }, ladder<T>(1e-10, 1.44));
-  record<T>(g, "dsin", [](T x) { return dm::dsin(x); }, linear<T>(-20.0, 20.0));
-  record<T>(g, "dsin", [](T x) { return dm::dsin(x); }, linear<T>(-1.0e5, 1.0e5));
-  record<T>(g, "dcos", [](T x) { return dm::dcos(x); }, linear<T>(-20.0, 20.0));
-  record<T>(g, "dcos", [](T x) { return dm::dcos(x); }, linear<T>(-1.0e5, 1.0e5));
-  // Neighbours of k pi/2, where the exact float reduction path runs.
-  std::vector<T> near_pio2;
-  for (int k = 1; k <= kGrid; ++k) {
-    near_pio2.push_back(static_cast<T>(static_cast<double>(k * 317) * 1.5707963267948966));
-  }
-  record<T>(g, "dsin", [](T x) { return dm::dsin(x); }, near_pio2);
-  record<T>(g, "dcos", [](T x) { return dm::dcos(x); }, near_pio2);
-  record<T>(g, "dsincos_s", [](T x) { T s; T c; dm::dsincos(x, s, c); return s; }, linear<T>(-7.0, 7.0));
-  record<T>(g, "dsincos_c", [](T x) { T s; T c; dm::dsincos(x, s, c); return c; }, linear<T>(-7.0, 7.0));
-  record<T>(g, "datan", [](T x) { return dm::datan(x); }, linear<T>(-30.0, 30.0));
-  record<T>(g, "datan", [](T x) { return dm::datan(x); }, ladder<T>(1e-8, 1.44));
-  // datan2 on points of a 2D grid covering the four quadrants and both axes.
-  {
-    const std::string prefix = std::string("datan2") + suffix<T>() + "@";
-    for (int i = 0; i < kGrid; ++i) {
-      const T y = static_cast<T>(-5.0 + 10.0 * static_cast<double>(i % 10) / 9.0);
-      const T x = static_cast<T>(-5.0 + 10.0 * static_cast<double>(i / 10) / 9.0);
-      g.add(prefix + hex_bits(y) + "," + hex_bits(x), dm::datan2(y, x));
-    }
-    const std::vector<T> sp = specials<T>();
-    for (const T y : sp) {
-      for (const T x : sp) {
-        g.add(prefix + hex_bits(y) + "," + hex_bits(x), dm::datan2(y, x));
-      }
-    }
-  }
-  record<T>(g, "dlgamma", [](T x) { return dm::dlgamma(x); }, linear<T>(0.001, 12.0));
-  record<T>(g, "dlgamma", [](T x) { return dm::dlgamma(x); }, ladder<T>(1e-7, 1.35));
-  record<T>(g, "ddigamma", [](T x) { return dm::ddigamma(x); }, linear<T>(0.001, 12.0));
-  record<T>(g, "ddigamma", [](T x) { return dm::ddigamma(x); }, ladder<T>(1e-7, 1.35));
-  record<T>(g, "derf", [](T x) { return dm::derf(x); }, linear<T>(-6.0, 6.0));
-  record<T>(g, "derfc", [](T x) { return dm::derfc(x); }, linear<T>(-6.0, f32 ? 10.5 : 28.0));
-}
-
-}  // namespace
 
 TEST_CASE("detmath results match the golden bits on every target") {
-  GoldenFile g("detmath");
-  record_all<float>(g);
-  record_all<double>(g);
+  mptrack::test::GoldenFile g("detmath");
+  mptrack::test::golden_case_detmath(g);
   CHECK(g.size() > 5000u);
   CHECK(g.matches());
 }

@@ -1,63 +1,14 @@
-// Bit-exact record of GM-PHD and GM-CPHD (double and float) over 15 scans
-// of the phd_test_scenario.h data: extracted states, weights, SNRs, the
-// clutter rate and cardinality. Same bits on x86-64, aarch64 and armhf.
+// Bit-exact golden record: the case is tests/golden/cases/phd.cpp (shared
+// with the bare-metal runner). Same bits on x86-64, aarch64, armhf and ppc.
 #include <doctest/doctest.h>
 
-#include <memory>
-#include <string>
-
+#include "cases/golden_cases.h"
 #include "golden.h"
-#include "mptrack/phd/phd_filter.h"
-#include "../unit/phd_test_scenario.h"
-
-using namespace mptrack;
-
-namespace {
-
-const phdtest::Truth kTruth[2] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0, 10.0}};
-
-template <class T, class Filter>
-void record(test::GoldenFile& g, const std::string& tag, ClutterMode mode) {
-  auto f = std::make_unique<Filter>();
-  RfsFilterParams<T> p;
-  p.amplitude.threshold = T(phdtest::kThreshold);
-  p.clutter_mode = mode;
-  REQUIRE(f->init(p) == Status::kOk);
-  auto scan_d = std::make_unique<Scan<double, DefaultCaps::kMaxMeasurements>>();
-  auto scan = std::make_unique<Scan<T, DefaultCaps::kMaxMeasurements>>();
-  for (int k = 0; k < 15; ++k) {
-    phdtest::make_scan(*scan_d, k, kTruth, 2, 40, 21);
-    scan->time_us = scan_d->time_us;
-    scan->measurements.clear();
-    for (const auto& m : scan_d->measurements) {
-      Measurement<T> y;
-      y.range_m = T(m.range_m);
-      y.azimuth_rad = T(m.azimuth_rad);
-      y.amplitude = T(m.amplitude);
-      (void)scan->measurements.push_back(y);
-    }
-    (void)f->step(*scan);
-    const std::string s = tag + ".k" + std::to_string(k);
-    g.add(s + ".expected", f->expected_targets());
-    g.add(s + ".clutter_rate", f->clutter().total_rate());
-    for (const auto& t : f->outputs()[0].tracks) {
-      const std::string id = s + ".t" + std::to_string(t.id);
-      g.add(id + ".px", t.state(0));
-      g.add(id + ".vy", t.state(3));
-      g.add(id + ".w", t.existence);
-      g.add(id + ".snr", t.snr);
-    }
-  }
-}
-
-}  // namespace
 
 TEST_CASE("GM-PHD and GM-CPHD golden record") {
-  test::GoldenFile g("phd_filters");
-  record<double, GmPhdFilter<double>>(g, "phd.d.est", ClutterMode::kEstimatedUniform);
-  record<double, GmCphdFilter<double>>(g, "cphd.d.map", ClutterMode::kEstimatedMap);
-  record<float, GmPhdFilter<float>>(g, "phd.f.known", ClutterMode::kKnownUniform);
-  record<float, GmCphdFilter<float>>(g, "cphd.f.est", ClutterMode::kEstimatedUniform);
-  CHECK(g.size() > 100);
+  mptrack::test::GoldenFile g("phd_filters");
+  mptrack::test::golden_case_phd_filters(g);
+  CHECK(g.failures() == 0u);
+  CHECK(g.size() > 100u);
   CHECK(g.matches());
 }

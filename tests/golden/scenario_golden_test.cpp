@@ -23,12 +23,12 @@ TEST_CASE("scenario golden: seed000-s2 scans 1..5 (float) are bit-exact") {
   for (std::uint32_t k = 1; k <= 5; ++k) {
     REQUIRE(gen.generate(k, sim) == mptrack::Status::kOk);
     REQUIRE(to_scan(sim, scan) == mptrack::Status::kOk);
-    const std::string p = "k" + std::to_string(k);
+    const mptrack::test::Label p = mptrack::test::Label("k") + k;
     g.add(p + ".time_us", scan.time_us);
     g.add(p + ".count", static_cast<std::uint64_t>(scan.measurements.size()));
     for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
       const auto& m = scan.measurements[j];
-      const std::string q = p + ".m" + std::to_string(j);
+      const mptrack::test::Label q = p + ".m" + j;
       g.add(q + ".r", m.range_m);
       g.add(q + ".az", m.azimuth_rad);
       g.add(q + ".amp", m.amplitude);
@@ -37,7 +37,7 @@ TEST_CASE("scenario golden: seed000-s2 scans 1..5 (float) are bit-exact") {
                                                          : -1 - static_cast<std::int64_t>(sim.measurements[j].origin.id)));
     }
     for (const auto& t : sim.truth) {
-      const std::string q = p + ".t" + std::to_string(t.target_id);
+      const mptrack::test::Label q = p + ".t" + t.target_id;
       g.add(q + ".px", t.x.px);
       g.add(q + ".py", t.x.py);
     }

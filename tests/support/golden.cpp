@@ -38,15 +38,26 @@ std::string hex_bits(double v) {
 GoldenFile::GoldenFile(std::string name)
     : path_(std::string(MPTRACK_GOLDEN_DIR) + "/" + name + ".golden") {}
 
-void GoldenFile::add(const std::string& label, float v) { lines_.push_back(label + " f32 " + hex_bits(v)); }
+void GoldenFile::add_line(const char* label, char kind, std::uint64_t bits) {
+  char buf[Label::kCapacity + 32];
+  const std::size_t n = format_line(buf, sizeof buf, label, kind, bits);
+  lines_.emplace_back(buf, n);
+}
 
-void GoldenFile::add(const std::string& label, double v) { lines_.push_back(label + " f64 " + hex_bits(v)); }
+void GoldenFile::add_f32(const char* label, float v) { add_line(label, 'f', bits_of(v)); }
 
-void GoldenFile::add(const std::string& label, std::int64_t v) {
-  lines_.push_back(label + " i64 " + std::to_string(v));
+void GoldenFile::add_f64(const char* label, double v) { add_line(label, 'd', bits_of(v)); }
+
+void GoldenFile::add_i64(const char* label, std::int64_t v) {
+  add_line(label, 'i', static_cast<std::uint64_t>(v));
+}
+
+void GoldenFile::on_failure(const char* what) {
+  std::fprintf(stderr, "golden %s: case precondition failed: %s\n", path_.c_str(), what);
 }
 
 bool GoldenFile::matches() const {
+  if (failures() > 0) return false;
   if (env_set("MPTRACK_GOLDEN_REGENERATE")) {
     if (env_set("CI")) {
       std::fprintf(stderr, "golden: refusing to regenerate %s under CI\n", path_.c_str());

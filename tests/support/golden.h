@@ -8,8 +8,11 @@
 //   g.add("dexp_d", yd);           // double -> "dexp_d f64 3ff0000000000000"
 //   CHECK(g.matches());
 //
-// The same file is compared on x86-64 and, under qemu-user, on aarch64 and
-// armhf: passing everywhere is the proof of cross-target bit-exactness.
+// GoldenFile is the Linux GoldenSink (tests/golden/cases/golden_sink.h):
+// the golden cases record into it in the doctest tests, and into the
+// bare-metal runner's sink on the Cortex-M7. The same file is compared on
+// x86-64 and, under qemu-user, on aarch64, armhf and big-endian ppc: passing
+// everywhere is the proof of cross-target bit-exactness.
 //
 // Regenerate mode: MPTRACK_GOLDEN_REGENERATE=1 ctest -R golden rewrites the
 // files instead of comparing (review the diff, then commit). It refuses to
@@ -21,18 +24,16 @@
 #include <string>
 #include <vector>
 
+#include "../golden/cases/golden_sink.h"
+
 namespace mptrack::test {
 
-class GoldenFile {
+class GoldenFile final : public GoldenSink {
  public:
   explicit GoldenFile(std::string name);
-
-  void add(const std::string& label, float v);
-  void add(const std::string& label, double v);
-  void add(const std::string& label, std::int64_t v);
-  void add(const std::string& label, std::uint64_t v) { add(label, static_cast<std::int64_t>(v)); }
-  void add(const std::string& label, int v) { add(label, static_cast<std::int64_t>(v)); }
-  void add(const std::string& label, unsigned v) { add(label, static_cast<std::int64_t>(v)); }
+  GoldenFile(const GoldenFile&) = delete;
+  GoldenFile& operator=(const GoldenFile&) = delete;
+  ~GoldenFile() = default;
 
   /// Compares the recorded lines with the committed file (or rewrites it in
   /// regenerate mode). On mismatch prints the first differing lines and a
@@ -43,6 +44,12 @@ class GoldenFile {
   const std::string& path() const { return path_; }
 
  private:
+  void add_f32(const char* label, float v) override;
+  void add_f64(const char* label, double v) override;
+  void add_i64(const char* label, std::int64_t v) override;
+  void add_line(const char* label, char kind, std::uint64_t bits);
+  void on_failure(const char* what) override;
+
   std::string path_;
   std::vector<std::string> lines_;
 };

@@ -270,8 +270,13 @@ TEST_CASE("F3: a detection whose amplitude is not finite is dropped, counted and
   const std::uint8_t* bytes = kSeed + 3;
   for (std::size_t i = 0; i < cube.iq.size(); ++i) {
     const std::size_t k = (4 * i) % (avail - 3);
+    // The seed's bytes are little-endian floats (fuzz_frontend.cpp), also
+    // on big-endian targets: assemble the bits, then reinterpret.
+    const std::uint8_t* b = bytes + k;
+    const std::uint32_t bits = static_cast<std::uint32_t>(b[0]) | (static_cast<std::uint32_t>(b[1]) << 8) |
+                               (static_cast<std::uint32_t>(b[2]) << 16) | (static_cast<std::uint32_t>(b[3]) << 24);
     float f;
-    std::memcpy(&f, bytes + k, 4);
+    std::memcpy(&f, &bits, 4);
     if (mptrack::is_finite(f) && (f > 1e6f || f < -1e6f)) f *= 1e-32f;
     cube.iq[i] = f;
   }

@@ -1,0 +1,16 @@
+# Reads golden_cases.def (the one list of golden cases) for CMake:
+#   MPTRACK_GOLDEN_CASE_NAMES    golden file names (tests/golden/data/<name>.golden)
+#   MPTRACK_GOLDEN_CASE_SOURCES  golden_sink.cpp and every case source, once each
+set(_mptrack_cases_dir ${CMAKE_CURRENT_LIST_DIR})
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_mptrack_cases_dir}/golden_cases.def)
+file(STRINGS ${_mptrack_cases_dir}/golden_cases.def _mptrack_case_lines REGEX "^MPTRACK_GOLDEN_CASE\\(")
+set(MPTRACK_GOLDEN_CASE_NAMES)
+set(MPTRACK_GOLDEN_CASE_SOURCES ${_mptrack_cases_dir}/golden_sink.cpp)
+foreach(_line IN LISTS _mptrack_case_lines)
+  if(NOT _line MATCHES "^MPTRACK_GOLDEN_CASE\\(([A-Za-z0-9_]+), *([A-Za-z0-9_]+)\\)")
+    message(FATAL_ERROR "golden_cases.def: cannot parse '${_line}'")
+  endif()
+  list(APPEND MPTRACK_GOLDEN_CASE_NAMES ${CMAKE_MATCH_1})
+  list(APPEND MPTRACK_GOLDEN_CASE_SOURCES ${_mptrack_cases_dir}/${CMAKE_MATCH_2}.cpp)
+endforeach()
+list(REMOVE_DUPLICATES MPTRACK_GOLDEN_CASE_SOURCES)
