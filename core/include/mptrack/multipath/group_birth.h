@@ -1,0 +1,100 @@
+// Track births from multi-detection groups (seed 002 Sec. III-E;
+// docs/algorithms/multipath.md §Births).
+//
+// Detections that the association leaves to clutter are grouped: two go in
+// one group when they are within rho on every axis (slant range, range
+// rate, azimuth). The candidates are sorted by slant range so that the
+// search for a seed's partners stops at the first detection more than
+// rho_r away (a sweep over range, O(n log n + n k) instead of O(n^2)).
+// A group of m >= min_group_size detections (at most kMaxGroup, the closest
+// in range) is a track head if some assignment of its members to distinct
+// paths maps them to ground points that agree: every member is inverted
+// through its path (model/othr_measurement.h, othr_invert), and the
+// assignment with the smallest normalised spread is kept if its spread per
+// degree of freedom is at most birth_max_spread. Its mean is the new state.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "mptrack/model/othr_measurement.h"
+
+namespace mptrack::multipath {
+
+/// At most this many detections of a group are assigned to paths (the
+/// assignment search is P(N_P, m) <= 8!/4! = 1680 for m = 4).
+inline constexpr std::size_t kMaxGroup = 4;
+
+template <class T>
+struct GroupHypothesis {
+  model::OthrState<T> x = model::OthrState<T>::Zero();  ///< mean ground point [km, km/s, rad, 0]
+  T spread_per_dof = T(0);  ///< normalised spread / (3 (m - 1)); 0 for m = 1
+  bool valid = false;
+};
+
+/// The best assignment of the m detections ys[0..m) to distinct paths.
+/// sigma = [range km, range rate km/s, azimuth rad] scales the ground axes
+/// (g ~ r, g_dot ~ r_dot, theta ~ zeta near the receiver's plane).
+template <class T, std::size_t MaxPaths>
+GroupHypothesis<T> best_path_assignment(const model::OthrMeas<T>* ys, std::size_t m,
+                                        const model::OthrPath<T>* paths, std::size_t num_paths,
+                                        T baseline_km, const model::OthrMeas<T>& sigma) {
+  GroupHypothesis<T> best;
+  if (m == 0 || m > kMaxGroup || m > num_paths) return best;
+  std::array<std::array<model::OthrState<T>, MaxPaths>, kMaxGroup> ground{};
+  std::array<std::array<bool, MaxPaths>, kMaxGroup> ok{};
+  for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t p = 0; p < num_paths; ++p) ok[k][p] = model::othr_invert(ys[k], paths[p], baseline_km, ground[k][p]);
+  }
+  std::array<std::size_t, kMaxGroup> pick{};  // odometer over path indices
+  T best_spread = T(0);
+  for (;;) {
+    bool injective = true;
+    for (std::size_t a = 0; a < m && injective; ++a) {
+      injective = ok[a][pick[a]];
+      for (std::size_t b = 0; b < a && injective; ++b) injective = pick[a] != pick[b];
+    }
+    if (injective) {
+      model::OthrState<T> mean = model::OthrState<T>::Zero();
+      for (std::size_t k = 0; k < m; ++k) mean += ground[k][pick[k]];
+      mean /= static_cast<T>(m);
+      T spread = T(0);
+      for (std::size_t k = 0; k < m; ++k) {
+        const model::OthrState<T>& z = ground[k][pick[k]];
+        const T e0 = (z(0) - mean(0)) / sigma(0);
+        const T e1 = (z(1) - mean(1)) / sigma(1);
+        const T e2 = (z(2) - mean(2)) / sigma(2);
+        spread += e0 * e0 + e1 * e1 + e2 * e2;
+      }
+      if (!best.valid || spread < best_spread) {
+        best.valid = true;
+        best_spread = spread;
+        best.x = mean;
+        best.x(3) = T(0);
+      }
+    }
+    std::size_t d = 0;  // advance the odometer
+    while (d < m && ++pick[d] == num_paths) pick[d++] = 0;
+    if (d == m) break;
+  }
+  best.spread_per_dof = m > 1 ? best_spread / static_cast<T>(3 * (m - 1)) : T(0);
+  return best;
+}
+
+/// Sorts idx[0..n) by key[idx] ascending (insertion sort: stable,
+/// allocation-free; n is a scan's leftover detections).
+template <class T, class Index>
+void sort_by_key(Index* idx, std::size_t n, const T* key) {
+  for (std::size_t a = 1; a < n; ++a) {
+    const Index v = idx[a];
+    std::size_t b = a;
+    while (b > 0 && key[idx[b - 1]] > key[v]) {
+      idx[b] = idx[b - 1];
+      --b;
+    }
+    idx[b] = v;
+  }
+}
+
+}  // namespace mptrack::multipath
