@@ -73,7 +73,7 @@ struct MultipathParams {
   T birth_max_spread = T(4);
   /// Birth existence = birth_existence_scale min(1, (m / N_P)^2) for a group of m (seed 002 Sec. III-E).
   T birth_existence_scale = T(1);
-  T init_range_rate_std_mps = T(5);        ///< ground range-rate std of a new track [m/s]
+  T init_range_rate_std_mps = T(1);        ///< ground range-rate std of a new track, / sqrt(m) for m detections [m/s]
   T init_bearing_rate_std_radps = T(2e-4);  ///< bearing-rate std of a new track [rad/s]
 
   // --- reporting, gaps, numerics ---

@@ -119,7 +119,7 @@ class MultipathMfbpTracker {
     set_scan_noise(scan.has_doppler);
     predict(clock_.has_time() ? clock_.elapsed_s(scan.time_us, T(0)) : T(0));
     for (std::uint32_t r = 0; r < params_.vb_iterations; ++r) {
-      associate(r == 0);
+      associate(r == 0);  // first pass: caps counted once, predictive evidence
       update_tracks();
     }
     manage();
@@ -224,7 +224,7 @@ class MultipathMfbpTracker {
   }
 
   // Step 3a: pseudo-targets, gated pairs and their evidence, then BP.
-  void associate(bool count_caps) {
+  void associate(bool first_pass) {
     const std::size_t nv = valid_.size();
     has_bp_ = false;
     if (tracks_.empty() || nv == 0) {
@@ -237,8 +237,8 @@ class MultipathMfbpTracker {
     for (std::size_t i = 0; i < tracks_.size(); ++i) {
       for (std::size_t p = 0; p < params_.num_paths; ++p) {
         pseudo_[i][p] = -1;
-        if (!gate(tracks_[i], p, count_caps)) continue;
-        add_pseudo_target(tracks_[i], p);
+        if (!gate(tracks_[i], p, first_pass)) continue;
+        add_pseudo_target(tracks_[i], p, first_pass);
         pseudo_[i][p] = n_pseudo++;
       }
     }
@@ -279,19 +279,34 @@ class MultipathMfbpTracker {
 
   // Seed 002 eq. (43) for the pairs of gate(), as log beta = chi^{i,j,tau}
   // - chi^{0,j} - chi^{i,0,tau}: clutter and "missed" normalised to 1
-  // (docs/algorithms/multipath.md §Association).
-  void add_pseudo_target(const Track& t, std::size_t p) {
+  // (docs/algorithms/multipath.md §Association). The first VB pass of a
+  // scan (predictive = true) uses the predictive likelihood N(y; h, S)
+  // instead of the mean-field E_q ln N(y; h(x), R): with the prior's
+  // spread the trace penalty would reject every pair of a young track and
+  // the iteration could not start (docs/algorithms/multipath.md §Departures
+  // from the paper). Later passes use eq. (43) at the updated q(x).
+  void add_pseudo_target(const Track& t, std::size_t p, bool predictive) {
     const T q1 = t.existence;
     const T q0 = T(1) - q1;
     const T detect = q1 * ln_pd1_[p] + q0 * ln_pd0_ - (q1 * ln_miss1_[p] + q0 * ln_miss0_);
-    const T base = detect - ln_lambda_ - half_ln_det_ - T(0.5) * lin_.trace_penalty;
+    T base = detect - ln_lambda_;
+    if (predictive) {
+      T half_ln_det_s = T(1.5) * dmath::kLnTwoPi<T>;
+      for (int r = 0; r < 3; ++r) half_ln_det_s += dmath::dlog(lin_.L(r, r));
+      base -= half_ln_det_s;
+    } else {
+      base -= half_ln_det_ + T(0.5) * lin_.trace_penalty;
+    }
     static_cast<void>(bp_.add_target(T(1)));  // <= kPseudoTargets pseudo-targets
     for (std::size_t k = 0; k < gate_n_; ++k) {
       const std::size_t j = gate_j_[k];
-      const model::OthrMeas<T> v = y_[j] - lin_.h;
-      T d_r = v(0) * v(0) / scan_r_var_(0) + v(2) * v(2) / scan_r_var_(2);
-      if (has_doppler_) d_r += v(1) * v(1) / scan_r_var_(1);
-      static_cast<void>(bp_.add_edge(j, base - T(0.5) * d_r));  // <= kGatePairs per pseudo-target
+      T d = gate_d2_[k];
+      if (!predictive) {
+        const model::OthrMeas<T> v = y_[j] - lin_.h;
+        d = v(0) * v(0) / scan_r_var_(0) + v(2) * v(2) / scan_r_var_(2);
+        if (has_doppler_) d += v(1) * v(1) / scan_r_var_(1);
+      }
+      static_cast<void>(bp_.add_edge(j, base - T(0.5) * d));  // <= kGatePairs per pseudo-target
     }
   }
 
@@ -426,7 +441,7 @@ class MultipathMfbpTracker {
     const T rate_std = params_.init_range_rate_std_mps * T(1e-3);
     t.P.setZero();
     t.P(0, 0) = scan_r_var_(0) * inv_m;
-    t.P(1, 1) = has_doppler_ ? rate_std * rate_std : scan_r_var_(1);
+    t.P(1, 1) = has_doppler_ ? rate_std * rate_std * inv_m : scan_r_var_(1);
     t.P(2, 2) = scan_r_var_(2) * inv_m;
     t.P(3, 3) = params_.init_bearing_rate_std_radps * params_.init_bearing_rate_std_radps;
     t.x_prior = t.x;
