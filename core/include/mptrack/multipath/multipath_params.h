@@ -49,7 +49,7 @@ struct MultipathParams {
   T range_psd_m2ps3 = T(1e-2);      ///< ground-range white-noise PSD [m^2/s^3] (1e-8 km^2/s^3)
   T bearing_psd_rad2ps3 = T(1e-8);  ///< bearing white-noise PSD [rad^2/s^3]
 
-  // --- meta-state (seed 002 eq. (37)) ---
+  // --- meta-state (seed 002 eq. (38)) ---
   T p_stay_active = T(0.85);    ///< p(s_k = 1 | s_k-1 = 1) [-]
   T p_become_active = T(0.15);  ///< p(s_k = 1 | s_k-1 = 0) [-]
   T confirm_existence = T(0.85);  ///< delta_s: reported (counted) when q(s = 1) >= this [-]

@@ -7,7 +7,7 @@
 // previous posterior as prior. Per step():
 //   1. intake: valid detections (region, range-rate span, NaN) in km units;
 //   2. predict every track (model/cwna_motion.h) and its meta-state
-//      (seed 002 eq. (37));
+//      (the transition of seed 002 eq. (38));
 //   3. vb_iterations passes of
 //      a. association: every track is num_paths pseudo-targets (i, tau);
 //         gated pairs get the mean-field log-evidence of seed 002 eq. (43)
@@ -16,7 +16,7 @@
 //         only) gives E[a^{i,j,tau}] under the corrected constraints: one
 //         detection per (target, path), one origin per detection;
 //      b. meta-state: q(s = 1) from the expected detections over all paths
-//         (seed 002 eq. (38), one forward step);
+//         (seed 002 eqs. (38)-(40), one forward step);
 //      c. state: synthetic measurement per path and the stacked update from
 //         the prior, linearised at the current iterate (multipath/path_fusion.h);
 //   4. management: counting threshold, deletion below delete_existence;

@@ -1,8 +1,8 @@
 // Per-path linearisation and the state update of the multipath tracker
-// (seed 002 eqs. (24)-(32); docs/algorithms/multipath.md §State update).
+// (seed 002 eqs. (28)-(32); docs/algorithms/multipath.md §State update).
 //
 // Per (track, path) the VB association gives weights E[a^{i,j,tau}]; they
-// collapse into one synthetic measurement per path (seed 002 eqs. (27)-(28)):
+// collapse into one synthetic measurement per path (seed 002 eqs. (29)-(31)):
 //   y_bar = sum_j E[a] y_j / w,   R_bar = R / w,   w = sum_j E[a]
 // (no update when w is 0). The paths cannot be merged into one measurement
 // (each has its own h^tau), so the update uses all of them at once: a

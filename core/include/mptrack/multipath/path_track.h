@@ -1,9 +1,9 @@
 // One track of the multipath tracker: a ground-coordinate Gaussian
 // q(x) = N(x; x, P) in [g km, g_dot km/s, theta rad, theta_dot rad/s] and the
-// active/dormant meta-state q(s = 1) (seed 002 eqs. (24)-(40);
+// active/dormant meta-state q(s = 1) (seed 002 eqs. (28)-(40);
 // docs/algorithms/multipath.md §Track state). The prior of the current scan
 // (prediction) is kept beside the VB iterate: every VB pass restarts the
-// state update from it (seed 002 eq. (24): q(x) is prior x likelihood).
+// state update from it (seed 002 eq. (28): q(x) is prior x likelihood).
 #pragma once
 
 #include <array>
@@ -30,20 +30,20 @@ struct PathTrack {
   Mat4<T> P_prior = Mat4<T>::Zero();
   T existence = T(0);        ///< q(s = 1) after this scan's update
   T existence_prior = T(0);  ///< predicted p(s = 1) of this scan
-  /// E[d^tau]: expected detection indicator per path this scan (seed 002 eq. (38)).
+  /// E[d^tau]: expected detection indicator per path this scan (seed 002 eq. (40)).
   std::array<T, MaxPaths> detected{};
   std::int32_t measurement_index = -1;  ///< scan index of the most likely detection, -1 = none
   std::uint32_t age_scans = 0;
   bool confirmed = false;  ///< has reached the counting threshold once
 };
 
-/// Meta-state prediction p(s_k = 1) from q(s_k-1 = 1) (seed 002 eq. (37)).
+/// Meta-state prediction p(s_k = 1) from q(s_k-1 = 1) (the transition of seed 002 eq. (38)).
 template <class T>
 T existence_predict(T q1, T p_stay, T p_become) {
   return p_stay * q1 + p_become * (T(1) - q1);
 }
 
-/// Meta-state update with the emission exp(xi(s)) of seed 002 eq. (38):
+/// Meta-state update with the emission exp(xi(s)) of seed 002 eqs. (38)-(39):
 /// xi(s) = sum_tau E[d^tau] ln pd^tau(s) + (1 - E[d^tau]) ln(1 - pd^tau(s)).
 /// ln_pd1[tau], ln_miss1[tau] are ln pd^tau(1), ln(1 - pd^tau(1)); ln_pd0,
 /// ln_miss0 the same for the dormant state. Computed through the difference
