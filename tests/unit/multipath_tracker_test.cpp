@@ -97,15 +97,25 @@ TEST_CASE("multipath: one target on four paths, pd 0.75, Nc 20: one counted trac
   }
 }
 
-TEST_CASE("multipath: the seed 002 scene at pd 0.75, Nc 125 (4 targets, 30 scans): TPD >= 0.85") {
-  othr_scene::Scene scene;
-  scene.targets = othr_scene::seed002_targets();
-  scene.pd = 0.75;
-  scene.clutter_mean = 125.0;
-  const RunTally t = run_scene(scene, 30, Tracker::Params{});
-  REQUIRE(t.truth_scans == 82);  // 2 x 20 + 2 x 21 target-scans
-  CHECK(static_cast<double>(t.covered) / t.truth_scans >= 0.85);  // measured 0.91
-  CHECK(t.false_reports <= 10);                                   // measured 5
+TEST_CASE("multipath: the seed 002 scene at pd 0.75, Nc 125 (4 targets, 30 scans, 8 seeds): mean TPD >= 0.82") {
+  // Eight noise seeds: one seed decides little (two detections of the two
+  // parallel targets 50 km apart can fall in one group and start a ghost).
+  int truth_scans = 0, covered = 0, false_reports = 0;
+  for (std::uint32_t seed = 0; seed < 8; ++seed) {
+    othr_scene::Scene scene;
+    scene.targets = othr_scene::seed002_targets();
+    scene.pd = 0.75;
+    scene.clutter_mean = 125.0;
+    scene.seed = 0x5eed0002u + seed;
+    const RunTally t = run_scene(scene, 30, Tracker::Params{});
+    REQUIRE(t.truth_scans == 82);  // 2 x 20 + 2 x 21 target-scans
+    truth_scans += t.truth_scans;
+    covered += t.covered;
+    false_reports += t.false_reports;
+  }
+  MESSAGE("TPD " << static_cast<double>(covered) / truth_scans << ", false reports per run " << false_reports / 8.0);
+  CHECK(static_cast<double>(covered) / truth_scans >= 0.82);  // measured 0.87
+  CHECK(false_reports <= 8 * 10);                             // measured about 7 per run
 }
 
 TEST_CASE("multipath: clutter alone (Nc 400, 30 scans) yields no counted track") {

@@ -5,7 +5,8 @@
 // one group when they are within rho on every axis (slant range, range
 // rate, azimuth). The candidates are sorted by slant range so that the
 // search for a seed's partners stops at the first detection more than
-// rho_r away (a sweep over range, O(n log n + n k) instead of O(n^2)).
+// rho_r away (a sweep over range, O(n log n + n k) instead of O(n^2); the tracker
+// sorts the detections once per scan and its gating uses the same order).
 // A group of m >= min_group_size detections (at most kMaxGroup, the closest
 // in range) is a track head if some assignment of its members to distinct
 // paths maps them to ground points that agree: every member is inverted
@@ -36,11 +37,18 @@ struct GroupHypothesis {
 /// The best assignment of the m detections ys[0..m) to distinct paths.
 /// sigma = [range km, range rate km/s, azimuth rad] scales the ground axes
 /// (g ~ r, g_dot ~ r_dot, theta ~ zeta near the receiver's plane).
+/// The runner-up (second) is the best assignment whose ground range differs
+/// from the best one's by more than distinct_km: a group that fits two path
+/// assignments (e.g. two detections 33 km apart fit EE+EF and EF+FF) is
+/// ambiguous, and the caller may start both (docs/algorithms/multipath.md §Births).
 template <class T, std::size_t MaxPaths>
 GroupHypothesis<T> best_path_assignment(const model::OthrMeas<T>* ys, std::size_t m,
                                         const model::OthrPath<T>* paths, std::size_t num_paths,
-                                        T baseline_km, const model::OthrMeas<T>& sigma) {
+                                        T baseline_km, const model::OthrMeas<T>& sigma,
+                                        GroupHypothesis<T>* second = nullptr, T distinct_km = T(0)) {
   GroupHypothesis<T> best;
+  GroupHypothesis<T> runner;
+  T runner_spread = T(0);
   if (m == 0 || m > kMaxGroup || m > num_paths) return best;
   std::array<std::array<model::OthrState<T>, MaxPaths>, kMaxGroup> ground{};
   std::array<std::array<bool, MaxPaths>, kMaxGroup> ok{};
@@ -67,34 +75,39 @@ GroupHypothesis<T> best_path_assignment(const model::OthrMeas<T>* ys, std::size_
         const T e2 = (z(2) - mean(2)) / sigma(2);
         spread += e0 * e0 + e1 * e1 + e2 * e2;
       }
+      GroupHypothesis<T> h;
+      h.valid = true;
+      h.x = mean;
+      h.x(3) = T(0);
       if (!best.valid || spread < best_spread) {
-        best.valid = true;
+        const T dg = best.x(0) - mean(0);
+        if (best.valid && (dg > distinct_km || -dg > distinct_km)) {
+          runner = best;  // the old best is the runner-up now
+          runner_spread = best_spread;
+        }
+        best = h;
         best_spread = spread;
-        best.x = mean;
-        best.x(3) = T(0);
+      } else {
+        const T dg = best.x(0) - mean(0);
+        if ((dg > distinct_km || -dg > distinct_km) && (!runner.valid || spread < runner_spread)) {
+          runner = h;
+          runner_spread = spread;
+        }
       }
     }
     std::size_t d = 0;  // advance the odometer
     while (d < m && ++pick[d] == num_paths) pick[d++] = 0;
     if (d == m) break;
   }
-  best.spread_per_dof = m > 1 ? best_spread / static_cast<T>(3 * (m - 1)) : T(0);
-  return best;
-}
-
-/// Sorts idx[0..n) by key[idx] ascending (insertion sort: stable,
-/// allocation-free; n is a scan's leftover detections).
-template <class T, class Index>
-void sort_by_key(Index* idx, std::size_t n, const T* key) {
-  for (std::size_t a = 1; a < n; ++a) {
-    const Index v = idx[a];
-    std::size_t b = a;
-    while (b > 0 && key[idx[b - 1]] > key[v]) {
-      idx[b] = idx[b - 1];
-      --b;
-    }
-    idx[b] = v;
+  const T dof = m > 1 ? static_cast<T>(3 * (m - 1)) : T(1);
+  best.spread_per_dof = m > 1 ? best_spread / dof : T(0);
+  if (second != nullptr) {
+    const T dg = runner.x(0) - best.x(0);
+    *second = runner;
+    second->valid = runner.valid && (dg > distinct_km || -dg > distinct_km);
+    second->spread_per_dof = m > 1 ? runner_spread / dof : T(0);
   }
+  return best;
 }
 
 }  // namespace mptrack::multipath

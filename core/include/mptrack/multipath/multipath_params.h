@@ -53,7 +53,16 @@ struct MultipathParams {
   T p_stay_active = T(0.85);    ///< p(s_k = 1 | s_k-1 = 1) [-]
   T p_become_active = T(0.15);  ///< p(s_k = 1 | s_k-1 = 0) [-]
   T confirm_existence = T(0.85);  ///< delta_s: reported (counted) when q(s = 1) >= this [-]
-  T delete_existence = T(0.01);   ///< deleted when q(s = 1) falls below this [-]
+  /// A track counted before stays counted while q(s = 1) >= this [-]
+  /// (hysteresis standing in for the paper's smoothed q(s); equal to
+  /// confirm_existence: no hysteresis).
+  T hold_existence = T(0.85);
+  /// Deleted when the mean q(s = 1) over the last delete_window scans (the
+  /// birth value included) falls below this [-]. A mean, not the last value:
+  /// at low p_d the chain's floor (p_become_active) keeps a clutter track's
+  /// q(s = 1) near 0.03 for ever (docs/algorithms/multipath.md §Track management).
+  T delete_existence = T(0.1);
+  std::uint32_t delete_window = 3;  ///< scans averaged by the deletion rule, in [1, 8] (seed 002 Sec. III-E: 3)
 
   // --- association (seed 002 eqs. (41)-(55), pseudo-target BP) ---
   T gate_chi2 = T(9);                    ///< 3-dof gate (p_g 0.971, seed 002 Sec. IV) [-]
@@ -73,6 +82,12 @@ struct MultipathParams {
   T birth_max_spread = T(4);
   /// Birth existence = birth_existence_scale min(1, (m / N_P)^2) for a group of m (seed 002 Sec. III-E).
   T birth_existence_scale = T(1);
+  /// Also start the best assignment whose ground range differs from the best
+  /// one's by more than birth_distinct_range_m, when it passes the spread test:
+  /// an ambiguous group starts both and the association keeps the one the
+  /// next scans support (docs/algorithms/multipath.md §Births).
+  bool birth_ambiguous_both = true;
+  T birth_distinct_range_m = T(15000);
   T init_range_rate_std_mps = T(1);        ///< ground range-rate std of a new track, / sqrt(m) for m detections [m/s]
   T init_bearing_rate_std_radps = T(2e-4);  ///< bearing-rate std of a new track [rad/s]
 
@@ -103,6 +118,9 @@ struct MultipathParams {
     MPTRACK_CHECK_PARAM(where, "confirm_existence", check(confirm_existence > T(0) && confirm_existence < T(1)));
     MPTRACK_CHECK_PARAM(where, "delete_existence",
                         check(delete_existence >= T(0) && delete_existence < confirm_existence));
+    MPTRACK_CHECK_PARAM(where, "hold_existence",
+                        check(hold_existence > T(0) && hold_existence <= confirm_existence));
+    MPTRACK_CHECK_PARAM(where, "delete_window", check(delete_window >= 1 && delete_window <= 8));
     MPTRACK_CHECK_PARAM(where, "gate_chi2", check_range(gate_chi2, T(1e-3), T(1e4)));
     MPTRACK_CHECK_PARAM(where, "vb_iterations", check(vb_iterations >= 1 && vb_iterations <= 50));
     MPTRACK_CHECK_PARAM(where, "bp_max_iterations", check(bp_max_iterations >= 1 && bp_max_iterations <= 1000));
@@ -116,6 +134,7 @@ struct MultipathParams {
     MPTRACK_CHECK_PARAM(where, "birth_max_spread", check_range(birth_max_spread, T(0), T(1e6)));
     MPTRACK_CHECK_PARAM(where, "birth_existence_scale",
                         check(birth_existence_scale > T(0) && birth_existence_scale <= T(1)));
+    MPTRACK_CHECK_PARAM(where, "birth_distinct_range_m", check_range(birth_distinct_range_m, T(0), T(1e7)));
     MPTRACK_CHECK_PARAM(where, "init_range_rate_std_mps", check_range(init_range_rate_std_mps, T(1e-3), T(1e5)));
     MPTRACK_CHECK_PARAM(where, "init_bearing_rate_std_radps",
                         check_range(init_bearing_rate_std_radps, T(1e-9), T(1)));

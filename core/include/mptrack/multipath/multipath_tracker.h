@@ -19,7 +19,8 @@
 //         (seed 002 eqs. (38)-(40), one forward step);
 //      c. state: synthetic measurement per path and the stacked update from
 //         the prior, linearised at the current iterate (multipath/path_fusion.h);
-//   4. management: counting threshold, deletion below delete_existence;
+//   4. management: counting threshold, deletion when the mean q(s = 1) of
+//      the last delete_window scans is below delete_existence;
 //   5. births from multi-detection groups among detections the association
 //      left to clutter (multipath/group_birth.h);
 //   6. report the counted tracks (Cartesian ground frame, path_track.h).
@@ -28,7 +29,9 @@
 // pseudo-targets, kMaxGatePairs each); place the tracker in static storage.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -205,7 +208,35 @@ class MultipathMfbpTracker {
     }
     counters_.measurements_invalid += invalid;
     counters_.measurements_duplicate += duplicate;
+    sort_by_range();
     return invalid + duplicate;
+  }
+
+  // by_range_: valid detections in increasing slant range (index breaks
+  // ties: a total order, the same on every target). Gating searches it for
+  // the range window of a pseudo-target; births sweep it.
+  void sort_by_range() {
+    const std::size_t n = valid_.size();
+    for (std::size_t j = 0; j < n; ++j) by_range_[j] = static_cast<std::uint16_t>(j);
+    std::sort(by_range_.begin(), by_range_.begin() + static_cast<std::ptrdiff_t>(n),
+              [this](std::uint16_t a, std::uint16_t b) {
+                return y_[a](0) < y_[b](0) || (!(y_[b](0) < y_[a](0)) && a < b);
+              });
+  }
+
+  // First position in by_range_ whose slant range is >= r_km (binary search).
+  std::size_t first_at_or_above(T r_km) const {
+    std::size_t lo = 0;
+    std::size_t hi = valid_.size();
+    while (lo < hi) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      if (y_[by_range_[mid]](0) < r_km) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    return lo;
   }
 
   // Step 2.
@@ -254,7 +285,11 @@ class MultipathMfbpTracker {
     gate_n_ = 0;
     if (!lin_.valid) return false;
     std::size_t dropped = 0;
-    for (std::size_t j = 0; j < valid_.size(); ++j) {
+    // Only detections within the gate's range extent sqrt(gamma S_rr) can pass.
+    const T half = std::sqrt(params_.gate_chi2) * lin_.L(0, 0);
+    for (std::size_t q = first_at_or_above(lin_.h(0) - half); q < valid_.size(); ++q) {
+      const std::size_t j = by_range_[q];
+      if (y_[j](0) > lin_.h(0) + half) break;
       model::OthrMeas<T> v = y_[j] - lin_.h;
       if (!has_doppler_) v(1) = T(0);
       const T d2 = multipath::mahalanobis2(lin_, v);
@@ -368,7 +403,9 @@ class MultipathMfbpTracker {
         t.confirmed = true;
         ++counters_.tracks_confirmed;
       }
-      if (t.existence < params_.delete_existence || !finite_state(t)) {
+      t.counted = t.existence >= (t.counted ? params_.hold_existence : params_.confirm_existence);
+      t.record_existence();
+      if (t.mean_existence(params_.delete_window) < params_.delete_existence || !finite_state(t)) {
         ++counters_.tracks_deleted;
         continue;
       }
@@ -388,13 +425,12 @@ class MultipathMfbpTracker {
   // Step 5: groups of leftover detections, swept in slant range.
   void births() {
     std::size_t n = 0;
-    for (std::size_t j = 0; j < valid_.size(); ++j) {
+    for (std::size_t q = 0; q < valid_.size(); ++q) {  // in slant-range order
+      const std::size_t j = by_range_[q];
       const T clutter = has_bp_ ? bp_.clutter_belief(0, j) : T(1);
       used_[j] = false;
-      range_key_[j] = y_[j](0);
       if (clutter >= params_.birth_clutter_belief) cand_[n++] = static_cast<std::uint16_t>(j);
     }
-    multipath::sort_by_key(cand_.data(), n, range_key_.data());
     const std::size_t max_members = params_.num_paths < multipath::kMaxGroup ? params_.num_paths : multipath::kMaxGroup;
     for (std::size_t a = 0; a < n; ++a) {
       const std::size_t ja = cand_[a];
@@ -427,9 +463,20 @@ class MultipathMfbpTracker {
     for (std::size_t k = 0; k < m; ++k) ys[k] = y_[members[k]];
     model::OthrMeas<T> sigma;
     for (int r = 0; r < 3; ++r) sigma(r) = std::sqrt(scan_r_var_(r));
+    multipath::GroupHypothesis<T> second;
     const multipath::GroupHypothesis<T> h = multipath::best_path_assignment<T, kMaxPaths>(
-        ys.data(), m, params_.paths.data(), params_.num_paths, params_.baseline_km, sigma);
+        ys.data(), m, params_.paths.data(), params_.num_paths, params_.baseline_km, sigma, &second,
+        params_.birth_distinct_range_m * T(1e-3));
     if (!h.valid || h.spread_per_dof > params_.birth_max_spread) return false;
+    if (!spawn(h, m, valid_[members[0]])) return false;
+    if (params_.birth_ambiguous_both && second.valid && !(second.spread_per_dof > params_.birth_max_spread)) {
+      static_cast<void>(spawn(second, m, valid_[members[0]]));
+    }
+    return true;
+  }
+
+  // A new track at the ground point of hypothesis h from m detections.
+  bool spawn(const multipath::GroupHypothesis<T>& h, std::size_t m, std::size_t scan_index) {
     if (tracks_.size() == kMaxTracks) {
       ++counters_.track_cap_hits;
       return false;
@@ -449,7 +496,8 @@ class MultipathMfbpTracker {
     const T frac = static_cast<T>(m) / static_cast<T>(params_.num_paths);
     t.existence = params_.birth_existence_scale * (frac < T(1) ? frac * frac : T(1));
     t.existence_prior = t.existence;
-    t.measurement_index = static_cast<std::int32_t>(valid_[members[0]]);
+    t.record_existence();
+    t.measurement_index = static_cast<std::int32_t>(scan_index);
     static_cast<void>(tracks_.push_back(t));  // size checked above
     ++counters_.tracks_born;
     return true;
@@ -464,7 +512,7 @@ class MultipathMfbpTracker {
     e.tracks.clear();
     e.clutter.clear();
     for (const Track& t : tracks_) {
-      const bool counted = t.existence >= params_.confirm_existence;
+      const bool counted = t.counted;
       if (!counted && !params_.report_tentative) continue;
       TrackReport<T> r;
       r.id = t.id;
@@ -503,7 +551,7 @@ class MultipathMfbpTracker {
   std::array<T, kMaxPaths> synth_w_{};
   std::array<model::OthrMeas<T>, kMaxPaths> synth_y_{};
   std::array<std::uint16_t, kMaxMeasurements> cand_{};
-  std::array<T, kMaxMeasurements> range_key_{};
+  std::array<std::uint16_t, kMaxMeasurements> by_range_{};
   std::array<bool, kMaxMeasurements> used_{};
 };
 

@@ -35,6 +35,26 @@ struct PathTrack {
   std::int32_t measurement_index = -1;  ///< scan index of the most likely detection, -1 = none
   std::uint32_t age_scans = 0;
   bool confirmed = false;  ///< has reached the counting threshold once
+  bool counted = false;    ///< reported at the last scan
+  /// q(s = 1) of the last scans (ring, newest at history_next - 1), for
+  /// the deletion rule; history_count of them are filled.
+  std::array<T, 8> history{};
+  std::uint32_t history_next = 0;
+  std::uint32_t history_count = 0;
+
+  void record_existence() {
+    history[history_next] = existence;
+    history_next = (history_next + 1) % 8u;
+    if (history_count < 8u) ++history_count;
+  }
+  /// Mean q(s = 1) over the last min(window, history_count) records.
+  T mean_existence(std::uint32_t window) const {
+    const std::uint32_t n = window < history_count ? window : history_count;
+    if (n == 0) return existence;
+    T sum = T(0);
+    for (std::uint32_t k = 1; k <= n; ++k) sum += history[(history_next + 8u - k) % 8u];
+    return sum / static_cast<T>(n);
+  }
 };
 
 /// Meta-state prediction p(s_k = 1) from q(s_k-1 = 1) (the transition of seed 002 eq. (38)).
