@@ -20,6 +20,8 @@
 #include <cstdint>
 
 #include "mptrack/model/othr_measurement.h"
+#include "mptrack/multipath/multipath_params.h"
+#include "mptrack/multipath/path_track.h"
 
 namespace mptrack::multipath {
 
@@ -108,6 +110,36 @@ GroupHypothesis<T> best_path_assignment(const model::OthrMeas<T>* ys, std::size_
     second->spread_per_dof = m > 1 ? runner_spread / dof : T(0);
   }
   return best;
+}
+
+/// The track started from hypothesis h of a group of m detections
+/// (docs/algorithms/multipath.md §Births): mean h.x, covariance
+/// diag(sigma_r^2/m, sigma_rdot^2/m, sigma_zeta^2/m, init bearing-rate var),
+/// existence birth_existence_scale min(1, (m/N_P)^2). r_var is the scan's
+/// noise [km^2, (km/s)^2, rad^2]; without Doppler the range-rate variance is
+/// r_var(1) (the span squared).
+template <class T, std::size_t MaxPaths>
+PathTrack<T, MaxPaths> new_track(const GroupHypothesis<T>& h, std::size_t m, const MultipathParams<T>& p,
+                                 const model::OthrMeas<T>& r_var, bool has_doppler, std::uint32_t id,
+                                 std::int32_t scan_index) {
+  PathTrack<T, MaxPaths> t;
+  t.id = id;
+  t.x = h.x;
+  const T inv_m = T(1) / static_cast<T>(m);
+  const T rate_std = p.init_range_rate_std_mps * T(1e-3);
+  t.P.setZero();
+  t.P(0, 0) = r_var(0) * inv_m;
+  t.P(1, 1) = has_doppler ? rate_std * rate_std * inv_m : r_var(1);
+  t.P(2, 2) = r_var(2) * inv_m;
+  t.P(3, 3) = p.init_bearing_rate_std_radps * p.init_bearing_rate_std_radps;
+  t.x_prior = t.x;
+  t.P_prior = t.P;
+  const T frac = static_cast<T>(m) / static_cast<T>(p.num_paths);
+  t.existence = p.birth_existence_scale * (frac < T(1) ? frac * frac : T(1));
+  t.existence_prior = t.existence;
+  t.record_existence();
+  t.measurement_index = scan_index;
+  return t;
 }
 
 }  // namespace mptrack::multipath

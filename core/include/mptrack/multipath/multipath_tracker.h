@@ -405,7 +405,7 @@ class MultipathMfbpTracker {
       }
       t.counted = t.existence >= (t.counted ? params_.hold_existence : params_.confirm_existence);
       t.record_existence();
-      if (t.mean_existence(params_.delete_window) < params_.delete_existence || !finite_state(t)) {
+      if (t.mean_existence(params_.delete_window) < params_.delete_existence || !t.finite()) {
         ++counters_.tracks_deleted;
         continue;
       }
@@ -413,13 +413,6 @@ class MultipathMfbpTracker {
       ++w;
     }
     static_cast<void>(tracks_.resize(w));  // shrinking cannot fail
-  }
-
-  static bool finite_state(const Track& t) {
-    for (int r = 0; r < 4; ++r) {
-      if (!is_finite(t.x(r)) || !is_finite(t.P(r, r))) return false;
-    }
-    return true;
   }
 
   // Step 5: groups of leftover detections, swept in slant range.
@@ -481,24 +474,8 @@ class MultipathMfbpTracker {
       ++counters_.track_cap_hits;
       return false;
     }
-    Track t;
-    t.id = next_id_++;
-    t.x = h.x;
-    const T inv_m = T(1) / static_cast<T>(m);
-    const T rate_std = params_.init_range_rate_std_mps * T(1e-3);
-    t.P.setZero();
-    t.P(0, 0) = scan_r_var_(0) * inv_m;
-    t.P(1, 1) = has_doppler_ ? rate_std * rate_std * inv_m : scan_r_var_(1);
-    t.P(2, 2) = scan_r_var_(2) * inv_m;
-    t.P(3, 3) = params_.init_bearing_rate_std_radps * params_.init_bearing_rate_std_radps;
-    t.x_prior = t.x;
-    t.P_prior = t.P;
-    const T frac = static_cast<T>(m) / static_cast<T>(params_.num_paths);
-    t.existence = params_.birth_existence_scale * (frac < T(1) ? frac * frac : T(1));
-    t.existence_prior = t.existence;
-    t.record_existence();
-    t.measurement_index = static_cast<std::int32_t>(scan_index);
-    static_cast<void>(tracks_.push_back(t));  // size checked above
+    static_cast<void>(tracks_.push_back(multipath::new_track<T, kMaxPaths>(
+        h, m, params_, scan_r_var_, has_doppler_, next_id_++, static_cast<std::int32_t>(scan_index))));
     ++counters_.tracks_born;
     return true;
   }

@@ -47,6 +47,14 @@ struct PathTrack {
     history_next = (history_next + 1) % 8u;
     if (history_count < 8u) ++history_count;
   }
+  /// Finite mean and variances (a track that is not is deleted).
+  bool finite() const {
+    for (int r = 0; r < 4; ++r) {
+      if (!(x(r) - x(r) == T(0)) || !(P(r, r) - P(r, r) == T(0))) return false;
+    }
+    return true;
+  }
+
   /// Mean q(s = 1) over the last min(window, history_count) records.
   T mean_existence(std::uint32_t window) const {
     const std::uint32_t n = window < history_count ? window : history_count;
