@@ -19,6 +19,7 @@
 #include "mptrack/metrics/ospa.h"
 #include "mptrack/phd/phd_filter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
+#include "mptrack/multipath/multipath_tracker.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
@@ -77,10 +78,15 @@ template class phd::PhdFilter<float, DefaultCaps, false>;
 template class phd::PhdFilter<float, DefaultCaps, true>;
 template class CbMemberFilter<float, DefaultCaps>;
 
+// Multipath MF-BP (seed 002): float on targets
+template class MultipathMfbpTracker<float, DefaultCaps>;
+template class MultipathMfbpTracker<float, SmallBoardCaps>;
+
 // Params structs and their validate() (tracker_params.h blocks)
 template struct GnnParams<float>;
 template struct MfbpParams<float>;
 template struct RfsFilterParams<float>;
+template struct MultipathParams<float>;
 
 static_assert(caps_are_valid<DefaultCaps>());
 static_assert(caps_are_valid<SmallBoardCaps>());

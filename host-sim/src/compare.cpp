@@ -32,6 +32,9 @@ void default_ospa(const scenario::ScenarioSpec& spec, double& cutoff_m, double& 
   if (spec.space == scenario::MeasurementSpace::kCartesian) {
     cutoff_m = 300.0;  // seed 001 Sec. 5: OSPA p = 1, c = 300 m
     order = 1.0;
+  } else if (spec.space == scenario::MeasurementSpace::kOthr) {
+    cutoff_m = 20000.0;  // seed 002 gives no c: ours, 4 sigma_r (docs/algorithms/multipath.md §Evaluation)
+    order = 2.0;
   } else {
     cutoff_m = kOspaCutoff_m;  // seed 000 Sec. IV-A
     order = kOspaOrder;
@@ -42,6 +45,8 @@ std::vector<std::string> default_compare_trackers(const scenario::ScenarioSpec& 
   std::vector<std::string> names;
   if (spec.space == scenario::MeasurementSpace::kCartesian) {
     names = {"gmphd", "gmphd-known", "gmcphd", "gmcphd-known", "cbmember", "cbmember-known"};
+  } else if (spec.space == scenario::MeasurementSpace::kOthr) {
+    names = {"mfbp-multipath", "mfbp-filter"};
   } else {
     names = {"mfbp", "mfbp-filter", "gmphd", "gmcphd", "cbmember", "gmcphd-known", "gnn"};
   }

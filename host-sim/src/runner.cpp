@@ -1,6 +1,7 @@
 // Measurement-level Monte Carlo; see runner.h.
 #include "runner.h"
 
+#include "compare.h"
 #include "run/run_outputs.h"
 #include "run/scan_source.h"
 #include "writers.h"
@@ -12,6 +13,7 @@ Summary run_monte_carlo(const RunConfig& cfg) {
   const scenario::ScenarioSpec& spec = source.spec();
   LoopConfig loop = one_tracker_loop(cfg, spec.name);
   loop.clutter_scale = cfg.clutter_scale;
+  if (spec.space == scenario::MeasurementSpace::kOthr) default_ospa(spec, loop.ospa_cutoff_m, loop.ospa_order);
   check_loop_config(loop);  // before the output directory is created
 
   RunOutputs outputs(cfg, spec);

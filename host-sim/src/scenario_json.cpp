@@ -135,6 +135,38 @@ MotionSegment motion_segment(const json& v, const std::string& path) {
   return m;
 }
 
+// OTHR target (seed 002): "ground_state" [g km, g_dot km/s, theta rad,
+// theta_dot rad/s] instead of "initial_state" and "motion"; "snr" optional.
+TargetSpec othr_target(const json& v, const std::string& path) {
+  require_object(v, path, {"id", "ground_state", "lifetime", "snr"});
+  TargetSpec t;
+  t.id = uint_value(member(v, path, "id"), join(path, "id"));
+  t.ground_state = number_array<4>(v, path, "ground_state");
+  lifetime(v, path, t.birth_scan, t.death_scan);
+  t.snr = optional_number(v, path, "snr", 1.0, Range::kPositive);
+  return t;
+}
+
+// OTHR "paths": {"baseline_km": d, "list": [{"name", "tx_height_km", "rx_height_km", "pd"}, ...]}.
+void othr_paths(const json& doc, scenario::OthrSpec& o) {
+  const json& paths = member(doc, "", "paths");
+  require_object(paths, "paths", {"baseline_km", "list"});
+  o.baseline_km = number_field(paths, "paths", "baseline_km");
+  const json& list = member(paths, "paths", "list");
+  if (!list.is_array()) fail("paths.list", "expected an array of paths");
+  o.paths.clear();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string p = "paths.list[" + std::to_string(i) + "]";
+    require_object(list[i], p, {"name", "tx_height_km", "rx_height_km", "pd"});
+    scenario::OthrPathSpec ps;
+    ps.name = string_field(list[i], p, "name");
+    ps.tx_height_km = number_field(list[i], p, "tx_height_km");
+    ps.rx_height_km = number_field(list[i], p, "rx_height_km");
+    ps.pd = number_field(list[i], p, "pd", Range::kPositive);
+    o.paths.push_back(ps);
+  }
+}
+
 TargetSpec target(const json& v, const std::string& path) {
   require_object(v, path, {"id", "initial_state", "lifetime", "snr", "swerling", "motion"});
   TargetSpec t;
@@ -283,7 +315,8 @@ void pretty(std::ostream& out, const json& v, int indent) {
 
 ScenarioSpec scenario_from_json(const json& doc) {
   require_object(doc, "", {"schema", "name", "description", "scans", "scan_period_s", "measurement_space",
-                           "region", "measurement_noise", "threshold", "evaluation", "targets", "clutter"});
+                           "region", "measurement_noise", "threshold", "evaluation", "targets", "clutter",
+                           "paths"});
   ScenarioSpec s;
   if (string_field(doc, "", "schema") != kScenarioSchema) {
     fail("schema", std::string("expected \"") + kScenarioSchema + "\"");
@@ -298,11 +331,15 @@ ScenarioSpec scenario_from_json(const json& doc) {
     const std::string space = string_field(doc, "", "measurement_space");
     if (space == "cartesian") {
       s.space = scenario::MeasurementSpace::kCartesian;
+    } else if (space == "othr") {
+      s.space = scenario::MeasurementSpace::kOthr;
     } else if (space != "polar") {
-      fail("measurement_space", "expected \"polar\" or \"cartesian\"");
+      fail("measurement_space", "expected \"polar\", \"cartesian\" or \"othr\"");
     }
   }
   const bool cartesian = s.space == scenario::MeasurementSpace::kCartesian;
+  const bool othr = s.space == scenario::MeasurementSpace::kOthr;
+  if (!othr && doc.contains("paths")) fail("paths", "only an OTHR scenario has propagation paths");
   const json& region = member(doc, "", "region");
   const json& noise = member(doc, "", "measurement_noise");
   if (cartesian) {
@@ -312,6 +349,18 @@ ScenarioSpec scenario_from_json(const json& doc) {
     s.xy_region = scenario::CartesianRegion{rx[0], rx[1], ry[0], ry[1]};
     require_object(noise, "measurement_noise", {"sigma_xy_m"});
     s.sigma_xy_m = number_field(noise, "measurement_noise", "sigma_xy_m", Range::kPositive);
+  } else if (othr) {
+    // Slant range, azimuth and a symmetric range-rate interval.
+    require_object(region, "region", {"range_m", "azimuth_deg", "range_rate_max_mps"});
+    const auto rr = number_array<2>(region, "region", "range_m");
+    const auto ra = number_array<2>(region, "region", "azimuth_deg");
+    s.region = scenario::Region{rr[0], rr[1], ra[0], ra[1]};
+    s.othr.range_rate_max_mps = number_field(region, "region", "range_rate_max_mps", Range::kPositive);
+    require_object(noise, "measurement_noise", {"sigma_range_m", "sigma_azimuth_deg", "sigma_range_rate_mps"});
+    s.sigma_range_m = number_field(noise, "measurement_noise", "sigma_range_m", Range::kPositive);
+    s.sigma_azimuth_deg = number_field(noise, "measurement_noise", "sigma_azimuth_deg", Range::kPositive);
+    s.othr.sigma_range_rate_mps = number_field(noise, "measurement_noise", "sigma_range_rate_mps", Range::kPositive);
+    othr_paths(doc, s.othr);
   } else {
     require_object(region, "region", {"range_m", "azimuth_deg"});
     const auto rr = number_array<2>(region, "region", "range_m");
@@ -335,7 +384,8 @@ ScenarioSpec scenario_from_json(const json& doc) {
   const json& targets = member(doc, "", "targets");
   if (!targets.is_array()) fail("targets", "expected an array");
   for (std::size_t i = 0; i < targets.size(); ++i) {
-    s.targets.push_back(target(targets[i], "targets[" + std::to_string(i) + "]"));
+    const std::string p = "targets[" + std::to_string(i) + "]";
+    s.targets.push_back(othr ? othr_target(targets[i], p) : target(targets[i], p));
   }
   const json& clut = member(doc, "", "clutter");
   if (!clut.is_array()) fail("clutter", "expected an array");
@@ -356,11 +406,25 @@ json scenario_to_json(const ScenarioSpec& s) {
   doc["scans"] = s.num_scans;
   doc["scan_period_s"] = s.scan_period_s;
   const bool cartesian = s.space == scenario::MeasurementSpace::kCartesian;
+  const bool othr = s.space == scenario::MeasurementSpace::kOthr;
   if (cartesian) {
     doc["measurement_space"] = "cartesian";
     doc["region"] = {{"x_m", {s.xy_region.x_min_m, s.xy_region.x_max_m}},
                      {"y_m", {s.xy_region.y_min_m, s.xy_region.y_max_m}}};
     doc["measurement_noise"] = {{"sigma_xy_m", s.sigma_xy_m}};
+  } else if (othr) {
+    doc["measurement_space"] = "othr";
+    doc["region"] = {{"range_m", {s.region.range_min_m, s.region.range_max_m}},
+                     {"azimuth_deg", {s.region.azimuth_min_deg, s.region.azimuth_max_deg}},
+                     {"range_rate_max_mps", s.othr.range_rate_max_mps}};
+    doc["measurement_noise"] = {{"sigma_range_m", s.sigma_range_m},
+                                {"sigma_azimuth_deg", s.sigma_azimuth_deg},
+                                {"sigma_range_rate_mps", s.othr.sigma_range_rate_mps}};
+    json list = json::array();
+    for (const scenario::OthrPathSpec& p : s.othr.paths) {
+      list.push_back({{"name", p.name}, {"tx_height_km", p.tx_height_km}, {"rx_height_km", p.rx_height_km}, {"pd", p.pd}});
+    }
+    doc["paths"] = {{"baseline_km", s.othr.baseline_km}, {"list", list}};
   } else {
     doc["region"] = {{"range_m", {s.region.range_min_m, s.region.range_max_m}},
                      {"azimuth_deg", {s.region.azimuth_min_deg, s.region.azimuth_max_deg}}};
@@ -370,6 +434,13 @@ json scenario_to_json(const ScenarioSpec& s) {
   doc["evaluation"] = {{"first_scan", s.eval_first_scan}, {"last_scan", s.eval_last_scan}};
   json targets = json::array();
   for (const TargetSpec& t : s.targets) {
+    if (othr) {
+      targets.push_back({{"id", t.id},
+                         {"ground_state", t.ground_state},
+                         {"lifetime", lifetime_json(t.birth_scan, t.death_scan)},
+                         {"snr", t.snr}});
+      continue;
+    }
     json j = {{"id", t.id},
               {"initial_state", t.initial_state},
               {"lifetime", lifetime_json(t.birth_scan, t.death_scan)},

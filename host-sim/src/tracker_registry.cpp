@@ -6,6 +6,7 @@
 #include "mptrack/gnn/gnn_tracker.h"
 #include "trackers/vmp_adapter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
+#include "mptrack/multipath/multipath_tracker.h"
 #include "mptrack/phd/phd_filter.h"
 
 namespace mptrack::sim {
@@ -25,6 +26,7 @@ constexpr Entry kEntries[] = {
     {"mfbp-kce", "MF-BP ablation MP-RMTT-KCE: clutter map known exactly (from the scenario)"},
     {"mfbp-st", "MF-BP ablation MP-RMTTst: first MP iteration only"},
     {"gnn", "GNN + Kalman baseline"},
+    {"mfbp-multipath", "multipath MF-BP (seed 002): BP over (target, path), OTHR scenarios only"},
     {"gmphd", "IGGM GM-PHD with amplitude, clutter map estimated (seed 001)"},
     {"gmphd-uniform", "IGGM GM-PHD, uniform clutter rate and power estimated"},
     {"gmphd-known", "IGGM GM-PHD, uniform clutter of known rate (fixed model)"},
@@ -60,6 +62,8 @@ std::vector<TrackerFootprint> tracker_footprints() {
                  sizeof(GmPhdFilter<double, DefaultCaps>)});
   out.push_back({"GmCphdFilter<T, DefaultCaps>", sizeof(GmCphdFilter<float, DefaultCaps>),
                  sizeof(GmCphdFilter<double, DefaultCaps>)});
+  out.push_back({"MultipathMfbpTracker<T, DefaultCaps>", sizeof(MultipathMfbpTracker<float, DefaultCaps>),
+                 sizeof(MultipathMfbpTracker<double, DefaultCaps>)});
   out.push_back({"CbMemberFilter<T, DefaultCaps>", sizeof(CbMemberFilter<float, DefaultCaps>),
                  sizeof(CbMemberFilter<double, DefaultCaps>)});
   return out;
@@ -69,6 +73,7 @@ std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::strin
   for (const Entry& e : kEntries) {
     if (name != e.name) continue;
     if (name == "oracle") return make_oracle_tracker();
+    if (name == "mfbp-multipath") return make_multipath_tracker();
     if (name.rfind("mfbp", 0) == 0) return make_mfbp_tracker(name);
     if (name == "gnn") return make_gnn_tracker();
     if (name == "vmp") return make_vmp_adapter();

@@ -16,7 +16,7 @@
 using mptrack::Status;
 using namespace tracker_cases;
 
-#define MPTRACK_CONTRACT_CASES GnnCase, MfbpCase, MfbpSmootherCase, PhdCase, CphdCase, CbmCase
+#define MPTRACK_CONTRACT_CASES GnnCase, MfbpCase, MfbpSmootherCase, PhdCase, CphdCase, CbmCase, MultipathCase
 
 namespace {
 
@@ -27,6 +27,7 @@ static_assert(mptrack::is_tracker_v<mptrack::MfbpTracker<double, mptrack::Defaul
 static_assert(mptrack::is_tracker_v<PhdCase::Tracker>);
 static_assert(mptrack::is_tracker_v<CphdCase::Tracker>);
 static_assert(mptrack::is_tracker_v<CbmCase::Tracker>);
+static_assert(mptrack::is_tracker_v<MultipathCase::Tracker>);
 
 // ... and the detector is not vacuous: a type missing one member is not a tracker.
 struct NoFlush {

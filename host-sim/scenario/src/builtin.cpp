@@ -237,11 +237,60 @@ ScenarioSpec make_seed001(int number, bool hot_spots, bool weibull, double total
   return s;
 }
 
+// Seed 002 Sec. IV: OTHR, 4 targets in ground coordinates, 4 ionospheric
+// paths (E 100 km, F 260 km), baseline 100 km, 30 scans of 16 s, uniform
+// clutter Nc = 125 in (slant range, range rate, azimuth), pd 0.75 per path.
+ScenarioSpec make_seed002() {
+  ScenarioSpec s;
+  s.name = "seed002-othr";
+  s.description =
+      "Seed 002 Sec. IV: OTHR multipath, 4 targets (2 parallel 50 km apart on scans 1-20, 2 crossing near "
+      "scan 20 on scans 10-30), 4 ionospheric paths EE/EF/FE/FF (E 100 km, F 260 km, baseline 100 km), "
+      "pd 0.75 per path, uniform clutter Nc 125 per scan (--clutter-scale 3.2: Nc 400; --pd P).";
+  s.space = MeasurementSpace::kOthr;
+  s.num_scans = 30;
+  s.scan_period_s = 16.0;
+  s.region = Region{1.5e6, 2.0e6, 24.522932, 34.836173};  // 0.428 .. 0.608 rad
+  s.sigma_range_m = 5000.0;
+  s.sigma_azimuth_deg = 0.17188733853924696;  // 3 mrad
+  s.threshold = 0.5;  // amplitudes are not modelled (all 1)
+  s.eval_first_scan = 1;
+  s.eval_last_scan = 30;
+  s.othr.baseline_km = 100.0;
+  s.othr.range_rate_max_mps = 524.0;
+  s.othr.sigma_range_rate_mps = 1.0;
+  s.othr.paths = {{"EE", 100.0, 100.0, 0.75}, {"EF", 100.0, 260.0, 0.75},
+                  {"FE", 260.0, 100.0, 0.75}, {"FF", 260.0, 260.0, 0.75}};
+  const std::array<std::array<double, 4>, 4> ground = {{{1700.0, 0.10, 0.48, 8.7e-5},
+                                                        {1750.0, 0.10, 0.48, 8.7e-5},
+                                                        {1850.0, 0.20, 0.54, 8.7e-5},
+                                                        {1915.0, -0.20, 0.54, 8.7e-5}}};
+  const std::uint32_t birth[4] = {1, 1, 10, 10};
+  const std::uint32_t death[4] = {20, 20, 30, 30};
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    TargetSpec t;
+    t.id = i + 1;
+    t.ground_state = ground[i];
+    t.birth_scan = birth[i];
+    t.death_scan = death[i];
+    t.snr = 1.0;  // unused: detection is per path with its pd
+    s.targets.push_back(t);
+  }
+  ClutterSpec c;
+  c.id = 0;
+  c.uniform = true;
+  c.mean_count = 125.0;
+  c.birth_scan = 1;
+  c.death_scan = 30;
+  s.clutter.push_back(c);
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::string> builtin_scenario_names() {
   return {"seed000-s1", "seed000-s2", "seed000-s3", "seed001-s1", "seed001-s2",
-          "seed001-s3", "seed001-s4", "seed001-s5"};
+          "seed001-s3", "seed001-s4", "seed001-s5", "seed002-othr"};
 }
 
 bool builtin_scenario(const std::string& name, ScenarioSpec& out) {
@@ -271,6 +320,8 @@ bool builtin_scenario(const std::string& name, ScenarioSpec& out) {
     out = make_seed001(5, false, true, 156.0,
                        "Seed 001 S5 (Table 1 variant: uniform): Weibull clutter (b 0.8), 156 per scan (400 "
                        "generators x 0.39).");
+  } else if (name == "seed002-othr") {
+    out = make_seed002();
   } else {
     return false;
   }

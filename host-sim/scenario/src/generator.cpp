@@ -1,6 +1,7 @@
 // Scenario generator (docs/algorithms/scenarios.md §Measurement generation); the draw order
 // is documented in generator.h.
 #include "mptrack/scenario/generator.h"
+#include "mptrack/scenario/othr_generator.h"
 
 #include <cmath>
 #include <utility>
@@ -56,6 +57,9 @@ std::uint64_t scan_time_us(const ScenarioSpec& spec, std::uint32_t k) {
 }
 
 KinematicState target_state_at(const ScenarioSpec& spec, const TargetSpec& target, double t_s) {
+  if (spec.space == MeasurementSpace::kOthr) {
+    return othr_cartesian(othr_ground_state_at(spec, target, t_s));
+  }
   KinematicState x{target.initial_state[0], target.initial_state[1], target.initial_state[2],
                    target.initial_state[3]};
   double now = scan_time_s(spec, target.birth_scan);
@@ -133,6 +137,10 @@ Status Generator::generate(std::uint32_t k, SimScan& out) const {
   out.measurements.clear();
   out.dropped_outside_region = 0;
 
+  if (spec_.space == MeasurementSpace::kOthr) {
+    generate_othr_scan(spec_, options_.clutter_scale, rng, k, out);
+    return Status::kOk;
+  }
   const Region& reg = spec_.region;
   const double az_min = deg_to_rad(reg.azimuth_min_deg);
   const double az_max = deg_to_rad(reg.azimuth_max_deg);

@@ -26,6 +26,31 @@ std::string check_lifetime(const std::string& where, std::uint32_t birth, std::u
   return {};
 }
 
+// The OTHR block (seed 002 Sec. IV-A) and the targets' ground states.
+std::string validate_othr(const ScenarioSpec& s) {
+  const OthrSpec& o = s.othr;
+  if (!non_negative(o.baseline_km) || o.baseline_km > 1e4) return "paths.baseline_km: expected a number in [0, 1e4]";
+  if (!positive(o.range_rate_max_mps)) return "region.range_rate_mps: expected a positive bound";
+  if (!positive(o.sigma_range_rate_mps)) return "measurement_noise.sigma_range_rate_mps: expected a positive number";
+  if (o.paths.empty() || o.paths.size() > 8) return "paths.list: expected 1 to 8 paths";
+  for (std::size_t i = 0; i < o.paths.size(); ++i) {
+    const OthrPathSpec& p = o.paths[i];
+    if (!non_negative(p.tx_height_km) || p.tx_height_km > 1e4) return at("paths.list", i, "tx_height_km") + ": expected a number in [0, 1e4]";
+    if (!non_negative(p.rx_height_km) || p.rx_height_km > 1e4) return at("paths.list", i, "rx_height_km") + ": expected a number in [0, 1e4]";
+    if (!(finite(p.pd) && p.pd > 0.0 && p.pd <= 1.0)) return at("paths.list", i, "pd") + ": expected a number in (0, 1]";
+  }
+  for (std::size_t i = 0; i < s.targets.size(); ++i) {
+    for (double v : s.targets[i].ground_state) {
+      if (!finite(v)) return at("targets", i, "ground_state") + ": expected 4 finite numbers";
+    }
+    if (!(s.targets[i].ground_state[0] > 0.0)) return at("targets", i, "ground_state") + ": expected a positive ground range";
+  }
+  for (std::size_t i = 0; i < s.clutter.size(); ++i) {
+    if (!s.clutter[i].uniform) return at("clutter", i, "type") + ": an OTHR scenario has uniform clutter only";
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string validate(const ScenarioSpec& s) {
@@ -57,6 +82,10 @@ std::string validate(const ScenarioSpec& s) {
       return "region.y_m: expected [min, max] with min < max";
     }
     if (!positive(s.sigma_xy_m)) return "measurement_noise.sigma_xy_m: expected a positive number";
+  }
+  if (s.space == MeasurementSpace::kOthr) {
+    const std::string e = validate_othr(s);
+    if (!e.empty()) return e;
   }
   for (std::size_t i = 0; i < s.targets.size(); ++i) {
     const TargetSpec& t = s.targets[i];
@@ -144,7 +173,8 @@ bool operator==(const MotionSegment& a, const MotionSegment& b) {
 
 bool operator==(const TargetSpec& a, const TargetSpec& b) {
   return a.id == b.id && a.initial_state == b.initial_state && a.birth_scan == b.birth_scan &&
-         a.death_scan == b.death_scan && a.snr == b.snr && a.swerling == b.swerling && a.motion == b.motion;
+         a.death_scan == b.death_scan && a.snr == b.snr && a.swerling == b.swerling && a.motion == b.motion &&
+         a.ground_state == b.ground_state;
 }
 
 bool operator==(const TimeVariation& a, const TimeVariation& b) {
@@ -168,6 +198,15 @@ bool operator==(const CartesianRegion& a, const CartesianRegion& b) {
   return a.x_min_m == b.x_min_m && a.x_max_m == b.x_max_m && a.y_min_m == b.y_min_m && a.y_max_m == b.y_max_m;
 }
 
+bool operator==(const OthrPathSpec& a, const OthrPathSpec& b) {
+  return a.name == b.name && a.tx_height_km == b.tx_height_km && a.rx_height_km == b.rx_height_km && a.pd == b.pd;
+}
+
+bool operator==(const OthrSpec& a, const OthrSpec& b) {
+  return a.baseline_km == b.baseline_km && a.range_rate_max_mps == b.range_rate_max_mps &&
+         a.sigma_range_rate_mps == b.sigma_range_rate_mps && a.paths == b.paths;
+}
+
 bool operator==(const Region& a, const Region& b) {
   return a.range_min_m == b.range_min_m && a.range_max_m == b.range_max_m &&
          a.azimuth_min_deg == b.azimuth_min_deg && a.azimuth_max_deg == b.azimuth_max_deg;
@@ -179,7 +218,7 @@ bool operator==(const ScenarioSpec& a, const ScenarioSpec& b) {
          a.sigma_azimuth_deg == b.sigma_azimuth_deg && a.threshold == b.threshold &&
          a.eval_first_scan == b.eval_first_scan && a.eval_last_scan == b.eval_last_scan &&
          a.targets == b.targets && a.clutter == b.clutter && a.space == b.space && a.xy_region == b.xy_region &&
-         a.sigma_xy_m == b.sigma_xy_m;
+         a.sigma_xy_m == b.sigma_xy_m && a.othr == b.othr;
 }
 
 }  // namespace mptrack::scenario

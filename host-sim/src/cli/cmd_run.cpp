@@ -2,6 +2,7 @@
 // measurement level (runner.h) or, for a raw-ADC scenario, from raw frames
 // through the front end (stream/adc_runner.h).
 #include <cstdio>
+#include <stdexcept>
 
 #include "cli/commands.h"
 #include "mptrack/adc/adc_json.h"
@@ -26,6 +27,16 @@ void apply_target_overrides(const RunOptions& o, scenario::ScenarioSpec& spec) {
   }
 }
 
+/// --pd P: every propagation path of an OTHR scenario detects with P
+/// (seed 002 Table IV: 0.75 and 0.4); the trackers read it from the spec.
+void apply_pd_override(const RunOptions& o, scenario::ScenarioSpec& spec) {
+  if (o.pd < 0.0) return;
+  if (spec.space != scenario::MeasurementSpace::kOthr) {
+    throw std::runtime_error("--pd applies to OTHR scenarios only (per-path detection probability)");
+  }
+  for (auto& p : spec.othr.paths) p.pd = o.pd;
+}
+
 /// The options both paths share.
 void fill_common(const RunOptions& o, TrackerRunOptions& t) {
   t = o.run;
@@ -46,7 +57,7 @@ int run_adc_scenario(const RunOptions& o) {
 void add_run_options(CLI::App& app, RunOptions& o) {
   std::string tracker_help = "tracker:";
   for (const auto& t : tracker_list()) tracker_help += "\n  " + t.name + ": " + t.description;
-  app.add_option("--scenario", o.scenario_name, "built-in scenario: seed000-s1 | seed000-s2 | seed000-s3 | seed004-drones | mimo-interference (raw ADC)")
+  app.add_option("--scenario", o.scenario_name, "built-in scenario: seed000-s1 | seed000-s2 | seed000-s3 | seed001-s1..s5 | seed002-othr | seed004-drones | mimo-interference (raw ADC)")
       ->capture_default_str();
   app.add_option("--scenario-file", o.scenario_file, "load a scenario from JSON (schema: host-sim/scenarios/*.json)")
       ->check(CLI::ExistingFile);
@@ -60,6 +71,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--snr2", o.snr2_text, "override target 2's mean SNR, linear (Table V: 10, 20, 30)");
   app.add_option("--clutter-scale", o.clutter_scale, "multiply every clutter mean count (sweeps: docs/algorithms/scenarios.md#seed-000)")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
+  app.add_option("--pd", o.pd, "OTHR scenarios: detection probability of every propagation path, in (0, 1]")
+      ->check(CLI::Range(1e-6, 1.0));
   app.add_option("--scans", o.scans, "use only the first N scans (0 = all)");
   app.add_option("--frames", o.frames, "raw-ADC scenarios: use only the first N frames (0 = all)");
   app.add_option("--rate", o.rate_hz, "raw-ADC scenarios: producer frame rate [Hz], frames dropped on overrun "
@@ -77,6 +90,7 @@ int run_default_command(const RunOptions& o) {
   fill_common(o, cfg);
   cfg.spec = o.scenario_file.empty() ? resolve_scenario(o.scenario_name) : load_scenario_file(o.scenario_file);
   apply_target_overrides(o, cfg.spec);
+  apply_pd_override(o, cfg.spec);
   truncate_scans(cfg.spec, o.scans);
   cfg.clutter_scale = o.clutter_scale;
   if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.spec.name + "-" + cfg.tracker;

@@ -28,6 +28,7 @@ struct RunOptions {
   int swerling = 0;
   std::string snr1_text, snr2_text;
   double clutter_scale = 1.0;
+  double pd = -1.0;  ///< --pd: every OTHR path's detection probability (< 0: the scenario's)
   std::uint32_t scans = 0;
   std::uint32_t frames = 0;
   double rate_hz = 0.0;

@@ -86,6 +86,8 @@ struct SimMeasurement {
   Origin origin;
   double x_m = 0.0;        ///< Cartesian scenarios: the drawn position (range/azimuth are its polar form) [m]
   double y_m = 0.0;
+  double doppler_mps = 0.0;  ///< OTHR scenarios: slant range rate [m/s] (range_m is the slant range)
+  std::int32_t path = -1;    ///< OTHR scenarios: index of the path of a target detection, -1 otherwise
 };
 
 struct TruthState {
@@ -103,6 +105,7 @@ struct SimScan {
   std::vector<TruthState> truth;     ///< targets alive at this scan, spec order
   std::vector<SimMeasurement> measurements;
   std::uint32_t dropped_outside_region = 0;
+  bool has_doppler = false;          ///< doppler_mps is filled in (OTHR scenarios)
 };
 
 /// Options applied on top of a spec (Table V rows, clutter sweeps).
@@ -138,7 +141,7 @@ class Generator {
 template <class T, std::size_t N>
 Status to_scan(const SimScan& in, Scan<T, N>& out) {
   out.time_us = in.time_us;
-  out.has_doppler = false;
+  out.has_doppler = in.has_doppler;
   out.measurements.clear();
   Status st = Status::kOk;
   for (const SimMeasurement& m : in.measurements) {
@@ -146,6 +149,7 @@ Status to_scan(const SimScan& in, Scan<T, N>& out) {
     y.range_m = static_cast<T>(m.range_m);
     y.azimuth_rad = static_cast<T>(m.azimuth_rad);
     y.amplitude = static_cast<T>(m.amplitude);
+    y.doppler_mps = static_cast<T>(m.doppler_mps);
     if (out.measurements.push_back(y) != Status::kOk) st = Status::kCapacityExceeded;
   }
   return st;

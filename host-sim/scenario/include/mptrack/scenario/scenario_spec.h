@@ -27,7 +27,30 @@ constexpr int swerling_shape(Swerling s) { return s == Swerling::kThree ? 2 : 1;
 /// A Cartesian measurement is still delivered in the polar fields of
 /// mptrack::Measurement (range = |z|, azimuth = atan2(y, x)); the trackers
 /// that model a Cartesian sensor convert it back (phd/measurement_model.h).
-enum class MeasurementSpace : std::uint8_t { kPolar, kCartesian };
+/// kOthr (seed 002 Sec. IV): over-the-horizon radar, one detection per
+/// target and ionospheric path in slant coordinates (range, range rate,
+/// azimuth); targets move in ground coordinates (TargetSpec::ground_state).
+enum class MeasurementSpace : std::uint8_t { kPolar, kCartesian, kOthr };
+
+/// One ionospheric propagation path of an OTHR scenario (seed 002 Sec.
+/// IV-A): virtual reflection heights of the transmit and receive legs, and
+/// the probability that a target is detected through it in a scan.
+struct OthrPathSpec {
+  std::string name;            ///< e.g. "EE", "EF", "FE", "FF"
+  double tx_height_km = 100.0;
+  double rx_height_km = 100.0;
+  double pd = 0.75;            ///< in (0, 1]
+};
+
+/// The OTHR geometry, the range-rate axis of the region and its noise.
+/// The slant range and azimuth axes use Region and sigma_range_m /
+/// sigma_azimuth_deg (slant range, azimuth zeta).
+struct OthrSpec {
+  double baseline_km = 100.0;                ///< receiver-transmitter distance d
+  double range_rate_max_mps = 524.0;         ///< region: |slant range rate| <= this
+  double sigma_range_rate_mps = 1.0;         ///< slant range-rate noise std
+  std::vector<OthrPathSpec> paths;           ///< 1..8 paths
+};
 
 /// Surveillance region of a Cartesian scenario [m] (seed 001 Sec. 5:
 /// [-1000, 1000]^2).
@@ -79,6 +102,10 @@ struct TargetSpec {
                                              ///< docs/algorithms/models.md §Inverse-gamma power belief)
   Swerling swerling = Swerling::kOne;
   std::vector<MotionSegment> motion;         ///< sorted by start_s
+  /// OTHR scenarios only: [g km, g_dot km/s, theta rad, theta_dot rad/s] at
+  /// the birth scan, constant rates in ground range and bearing (seed 002
+  /// Sec. IV); initial_state and motion are then unused.
+  std::array<double, 4> ground_state{};
 };
 
 /// Time variation of a clutter component over its lifetime (seed 000 eq. (104);
@@ -140,6 +167,8 @@ struct ScenarioSpec {
   MeasurementSpace space = MeasurementSpace::kPolar;
   CartesianRegion xy_region;                 ///< Cartesian: surveillance region [m]
   double sigma_xy_m = 10.0;                  ///< Cartesian: position noise std per axis [m] (seed 001: 10)
+  // --- additions for OTHR scenarios (seed 002); unused otherwise ---
+  OthrSpec othr;
 };
 
 /// Semantic checks (ranges, lifetimes, unique ids). Returns "" when valid,
@@ -154,6 +183,8 @@ bool operator==(const TimeVariation& a, const TimeVariation& b);
 bool operator==(const ClutterSpec& a, const ClutterSpec& b);
 bool operator==(const Region& a, const Region& b);
 bool operator==(const CartesianRegion& a, const CartesianRegion& b);
+bool operator==(const OthrPathSpec& a, const OthrPathSpec& b);
+bool operator==(const OthrSpec& a, const OthrSpec& b);
 bool operator==(const ScenarioSpec& a, const ScenarioSpec& b);
 inline bool operator!=(const ScenarioSpec& a, const ScenarioSpec& b) { return !(a == b); }
 
