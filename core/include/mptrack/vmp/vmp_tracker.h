@@ -34,6 +34,7 @@
 #include "mptrack/math/detmath.h"
 #include "mptrack/model/mimo_atom.h"
 #include "mptrack/model/mimo_range_angle_map.h"
+#include "mptrack/profile.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -146,6 +147,8 @@ class VmpTracker {
   Status step(const ScanType& cube) {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, cube.time_us, counters_));
+    MPTRACK_PROFILE_STEP(g_vmp);
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kInput);
     const std::uint64_t caps_before = total_cap_hits(counters_);
     if (clock_.gap_exceeded(cube.time_us)) {
       ++counters_.gap_resets;
@@ -165,6 +168,7 @@ class VmpTracker {
     } else {
       for (Track& t : tracks_) t.logit_xi = t.g;  // no data: the prior log-odds
     }
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kOutput);
     const bool pruned = prune();
     if (usable) births(pruned);
     for (Track& t : tracks_) t.xi_prev = vmp::sigmoid(t.logit_xi);
@@ -244,6 +248,7 @@ class VmpTracker {
 
   // Steps 2 and 4 (eqs. (12)-(16)).
   void amplitudes_and_existence() {
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kAmplitudeExistence);
     const std::size_t n = tracks_.size();
     q_.reset(n, lambda_p_);
     fill_problem(n);
@@ -275,6 +280,7 @@ class VmpTracker {
 
   // Step 3: per track, strongest first (Gauss-Seidel over tracks).
   void data_messages() {
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kDataMessage);
     const std::size_t n = tracks_.size();
     for (std::size_t k = 0; k < n; ++k) {
       const T w = model::atom_norm2(basis_, tracks_[k].atom) * model::cx_norm2(tracks_[k].mu);
@@ -303,6 +309,7 @@ class VmpTracker {
       slot.has_msg = m.valid;
       slot.m = m.m;
       slot.omega = m.omega;
+      MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kChain);  // to the end of this object's turn
       for (std::size_t it = 0; it < params_.outer_iterations; ++it) {
         counters_.numerical_repairs += smoother_.smooth(t.chain, static_cast<T>(params_.min_variance));
         smoother_.update_gamma(t.chain, static_cast<T>(params_.gamma_shape_zeta),
@@ -346,6 +353,7 @@ class VmpTracker {
   // strong track's unexplained remainder, must not hide a new object elsewhere)
   // and accepts the first candidate whose existence log-odds exceed logit(1 - p_b).
   void births(bool refresh) {
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kBirth);
     if (refresh) amplitudes_and_existence();
     for (std::size_t b = 0; b < params_.max_births_per_frame; ++b) {
       bool born = false;
