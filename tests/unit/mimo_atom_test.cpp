@@ -200,7 +200,8 @@ TEST_CASE("MIMO spectrum: a noiseless echo gives s^H z = ||s||^2 at the truth") 
   // The residual map finds the echo within one grid cell.
   mptrack::model::MimoRangeAngleMap<double, kNV, kKB, 96, 64> map;
   REQUIRE(map.init(f.basis, 3.0, 100.0, 1.17, 0.97, 1.0 / 32.0));
-  const auto pk = map.best(f.basis, f.spec->z_re(), f.spec->z_im(), [](double, double, double p) { return p; });
+  map.evaluate(f.basis, f.spec->z_re(), f.spec->z_im());
+  const auto pk = map.best([](double, double, double p) { return p; });
   REQUIRE(pk.found);
   CHECK(std::abs(pk.range_m - r) < 1.17);
   CHECK(std::abs(pk.sin_t - x / r) < 1.0 / 32.0);

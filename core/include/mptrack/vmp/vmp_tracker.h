@@ -20,7 +20,7 @@
 //      SNR (|mu|^2 + C_kk) Gamma_kk; confirmed = xi >= delta_minus).
 // A frame with a NaN/Inf sample is not used: tracks coast (prediction only),
 // counted in measurements_invalid (measurements_in counts frames), kPartial.
-// Memory: everything is a member (117 KB for float and VmpDefaultCaps);
+// Memory: everything is a member (141 KB for float and VmpDefaultCaps);
 // place the tracker in static storage.
 #pragma once
 
@@ -355,25 +355,24 @@ class VmpTracker {
   void births(bool refresh) {
     MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kBirth);
     if (refresh) amplitudes_and_existence();
+    const T nve = static_cast<T>(kNV) * basis_.e_u();
+    // Incremental objective |s^H r|^2 / rho_S - ln rho_S, rho_S ~ ||s||^2 + lambda_p.
+    const auto score = [&](T r, T, T p) {
+      const T rho2 = basis_.rho(r) * basis_.rho(r);
+      const T den = rho2 * nve + lambda_p_;
+      return rho2 * p / den - dmath::dlog(den);
+    };
+    const auto coef = [&](std::size_t j) { return model::cx_scale(tracks_[j].mu, vmp::sigmoid(tracks_[j].logit_xi)); };
     for (std::size_t b = 0; b < params_.max_births_per_frame; ++b) {
+      residual(Cx{T(1), T(0)}, kMaxTracks, coef);
+      map_.evaluate(basis_, buf_re_.data(), buf_im_.data());
       bool born = false;
       std::size_t n_excl = 0;
       for (std::size_t attempt = 0; attempt < kPeakTries && !born; ++attempt) {
-        residual(Cx{T(1), T(0)}, kMaxTracks, [&](std::size_t j) {
-          return model::cx_scale(tracks_[j].mu, vmp::sigmoid(tracks_[j].logit_xi));
-        });
-        const T nve = static_cast<T>(kNV) * basis_.e_u();
-        // Incremental objective |s^H r|^2 / rho_S - ln rho_S, rho_S ~ ||s||^2 + lambda_p.
-        const auto peak = map_.best(
-            basis_, buf_re_.data(), buf_im_.data(),
-            [&](T r, T, T p) {
-              const T rho2 = basis_.rho(r) * basis_.rho(r);
-              const T den = rho2 * nve + lambda_p_;
-              return rho2 * p / den - dmath::dlog(den);
-            },
-            excl_.data(), n_excl, kExclRange_m, kExclSin);
+        const auto peak = map_.best(score, excl_.data(), n_excl, kExclRange_m, kExclSin);
         if (!peak.found) return;
         excl_[n_excl++] = peak;
+        if (attempt > 0) residual(Cx{T(1), T(0)}, kMaxTracks, coef);  // refine_candidate overwrote it
         const vmp::PositionMessage<T> m = refine_candidate(peak);
         if (!m.valid || !in_region(m.m(0), m.m(1), T(0))) continue;
         if (!(candidate_logit(m) > logit_birth_)) continue;
