@@ -166,7 +166,12 @@ class VmpTracker {
       data_messages();
       amplitudes_and_existence();
     } else {
-      for (Track& t : tracks_) t.logit_xi = t.g;  // no data: the prior log-odds
+      // No data: the prior log-odds, and one window pass so that the filtered
+      // marginal the window freezes next (next_tail) belongs to its new oldest frame.
+      for (Track& t : tracks_) {
+        t.logit_xi = t.g;
+        counters_.numerical_repairs += smoother_.smooth(t.chain, static_cast<T>(params_.min_variance));
+      }
     }
     MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kOutput);
     const bool pruned = prune();
