@@ -125,6 +125,14 @@ class MimoRangeAngleMap {
     return peak;
   }
 
+  /// evaluate() then best(): the one-call form of the first version of this map.
+  template <class Score>
+  MapPeak<T> best(const MimoAtomBasis<T, NV, KB>& b, const T* r_re, const T* r_im, Score&& score,
+                  const MapPeak<T>* excl = nullptr, std::size_t n_excl = 0, T r_excl = T(0), T u_excl = T(0)) {
+    evaluate(b, r_re, r_im);
+    return best(score, excl, n_excl, r_excl, u_excl);
+  }
+
   std::size_t range_cells() const { return n_range_; }
   std::size_t angle_cells() const { return n_angle_; }
 
