@@ -200,10 +200,19 @@ TEST_CASE("MIMO spectrum: a noiseless echo gives s^H z = ||s||^2 at the truth") 
   // The residual map finds the echo within one grid cell.
   mptrack::model::MimoRangeAngleMap<double, kNV, kKB, 96, 64> map;
   REQUIRE(map.init(f.basis, 3.0, 100.0, 1.17, 0.97, 1.0 / 32.0));
-  const auto pk = map.best(f.basis, f.spec->z_re(), f.spec->z_im(), [](double, double, double p) { return p; });
+  map.evaluate(f.basis, f.spec->z_re(), f.spec->z_im());
+  const auto pk = map.best([](double, double, double p) { return p; });
   REQUIRE(pk.found);
   CHECK(std::abs(pk.range_m - r) < 1.17);
   CHECK(std::abs(pk.sin_t - x / r) < 1.0 / 32.0);
+  // The one-call form agrees, and an exclusion around the peak moves it.
+  const auto pk2 = map.best(f.basis, f.spec->z_re(), f.spec->z_im(), [](double, double, double p) { return p; });
+  CHECK(pk2.range_m == pk.range_m);
+  CHECK(pk2.sin_t == pk.sin_t);
+  const auto pk3 = map.best([](double, double, double p) { return p; }, &pk, 1, 3.75, 1.0 / 9.0);
+  REQUIRE(pk3.found);
+  CHECK((std::abs(pk3.range_m - pk.range_m) >= 3.75 || std::abs(pk3.sin_t - pk.sin_t) >= 1.0 / 9.0));
+  CHECK(pk3.beam_power < pk.beam_power);
 }
 
 TEST_CASE("MIMO range/angle map: every cell's beam power equals |s^H r|^2 / rho~^2 of the atom on that cell") {

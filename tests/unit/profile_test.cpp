@@ -1,6 +1,6 @@
 // Per-stage profile (core/include/mptrack/profile.h): exclusive stage
 // accounting and step statistics with a scripted clock, and the hooks of
-// MfbpTracker::step compiled in (this TU defines MPTRACK_PROFILE=1 before
+// MfbpTracker::step and VmpTracker::step compiled in (this TU defines MPTRACK_PROFILE=1 before
 // any include; nothing else in this executable includes core).
 #define MPTRACK_PROFILE 1
 
@@ -12,6 +12,8 @@
 #include "mfbp_scenario.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/profile.h"
+#include "mptrack/vmp/vmp_tracker.h"
+#include "vmp_test_frames.h"
 
 using mptrack::profile::MfbpStage;
 using mptrack::profile::ScopedStage;
@@ -129,5 +131,31 @@ TEST_CASE("profile: MfbpTracker::step reports one step and its stages into g_mfb
   // Out-of-order scans return before the step scope: no step recorded.
   (void)trk->step(*scan);
   CHECK(prof.steps() == 12u);
+  prof.set_clock(nullptr);
+}
+
+TEST_CASE("profile: VmpTracker::step reports one step and its stages into g_vmp") {
+  auto& prof = mptrack::profile::g_vmp;
+  prof.reset();
+  prof.set_clock(&counting);
+  auto trk = std::make_unique<mptrack::VmpTracker<float, mptrack::VmpSmallCaps>>();
+  const mptrack::VmpParams params;
+  REQUIRE(trk->init(params) == mptrack::Status::kOk);
+  auto cube = std::make_unique<vmp_test::Cube>();
+  vmp_test::Lcg rng{11u};
+  for (std::uint64_t k = 0; k < 4; ++k) {
+    vmp_test::clear(*cube, 100000u * k);
+    vmp_test::add_echo(params, 10.0 + 0.4 * static_cast<double>(k), 20.0, 1.0, 0.0, *cube);
+    vmp_test::add_noise(params, rng, *cube);
+    (void)trk->step(*cube);
+  }
+  CHECK(prof.steps() == 4u);
+  // A track lives from the first frame on: every stage ran.
+  for (std::size_t s = 0; s < static_cast<std::size_t>(mptrack::profile::VmpStage::kCount); ++s) {
+    CAPTURE(mptrack::profile::stage_name(static_cast<mptrack::profile::VmpStage>(s)));
+    CHECK(prof.total()[s] > 0u);
+  }
+  (void)trk->step(*cube);  // out of order: refused before the step scope
+  CHECK(prof.steps() == 4u);
   prof.set_clock(nullptr);
 }

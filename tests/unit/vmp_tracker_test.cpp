@@ -261,6 +261,19 @@ TEST_CASE("VMP contract: a frame with NaN samples is kPartial, counted, and the 
   CHECK(dist(t->outputs()[0].tracks[0], ds[0], 6) < 0.1);  // predicted
   frame(ds, 7, nullptr, *cube);
   CHECK(t->step(*cube) == Status::kOk);
+  // Several unusable frames in a row with a full window (W = 8): the frozen
+  // tail must stay the filtered state of the frame that left the window.
+  for (std::uint64_t n = 8; n < 20; ++n) {
+    frame(ds, n, nullptr, *cube);
+    if (n >= 9 && n <= 11) cube->iq[3] = std::numeric_limits<float>::infinity();
+    CHECK(t->step(*cube) == (n >= 9 && n <= 11 ? Status::kPartial : Status::kOk));
+    REQUIRE(t->outputs()[0].tracks.size() == 1);
+    CAPTURE(n);
+    CHECK(dist(t->outputs()[0].tracks[0], ds[0], n) < 0.1);
+  }
+  const auto& r = t->outputs()[0].tracks[0];
+  CHECK(std::abs(static_cast<double>(r.state(1)) - 4.0) < 0.2);
+  CHECK(std::abs(static_cast<double>(r.state(3)) - 2.0) < 0.2);
 }
 
 TEST_CASE("VMP contract: a full track pool returns kCapacityExceeded and counts the refused birth") {

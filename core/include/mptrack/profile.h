@@ -21,7 +21,7 @@
 // the per-stage totals of that step become last(), and min/max/total over
 // steps are updated. Several calls of the same stage in one step add up.
 //
-// One profile per component kind (g_frontend, g_mfbp) in static storage:
+// One profile per component kind (g_frontend, g_mfbp, g_vmp) in static storage:
 // every instance of that component (any Scalar, any Caps) reports into it,
 // which is what a profiling run of one pipeline wants; not thread-safe.
 #pragma once
@@ -62,12 +62,28 @@ enum class MfbpStage : std::uint8_t {
   kCount
 };
 
+/// VMP stages (VmpTracker::step; docs/algorithms/vmp.md §Per-frame schedule).
+enum class VmpStage : std::uint8_t {
+  kInput = 0,       ///< whitened spectrum of the frame and prediction of every track
+  kAmplitudeExistence,  ///< Gram matrix, q(alpha) and the q(xi) sweeps (every call)
+  kDataMessage,     ///< residuals r~_k and the Gauss-Newton data messages
+  kChain,           ///< window smoother passes and Gamma updates
+  kBirth,           ///< residual map, candidate refinement and tests
+  kOutput,          ///< pruning and the report
+  kCount
+};
+
 constexpr const char* stage_name(FrontEndStage s) {
   constexpr const char* kNames[] = {"range", "doppler", "angle", "cfar", "peaks"};
   return kNames[static_cast<std::size_t>(s)];
 }
 constexpr const char* stage_name(MfbpStage s) {
   constexpr const char* kNames[] = {"input", "mf_update", "evidence", "bp", "birth", "output"};
+  return kNames[static_cast<std::size_t>(s)];
+}
+
+constexpr const char* stage_name(VmpStage s) {
+  constexpr const char* kNames[] = {"input", "amplitude_existence", "data_message", "chain", "birth", "output"};
   return kNames[static_cast<std::size_t>(s)];
 }
 
@@ -180,11 +196,13 @@ class ScopedStep {
 
 using FrontEndProfile = StageProfile<static_cast<std::size_t>(FrontEndStage::kCount)>;
 using MfbpProfile = StageProfile<static_cast<std::size_t>(MfbpStage::kCount)>;
+using VmpProfile = StageProfile<static_cast<std::size_t>(VmpStage::kCount)>;
 
 #if MPTRACK_PROFILE
 /// The profiles the hooks in core report into (static storage, zero-initialised).
 inline FrontEndProfile g_frontend{};
 inline MfbpProfile g_mfbp{};
+inline VmpProfile g_vmp{};
 #endif
 
 }  // namespace mptrack::profile

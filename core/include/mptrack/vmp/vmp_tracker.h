@@ -20,7 +20,7 @@
 //      SNR (|mu|^2 + C_kk) Gamma_kk; confirmed = xi >= delta_minus).
 // A frame with a NaN/Inf sample is not used: tracks coast (prediction only),
 // counted in measurements_invalid (measurements_in counts frames), kPartial.
-// Memory: everything is a member (117 KB for float and VmpDefaultCaps);
+// Memory: everything is a member (141 KB for float and VmpDefaultCaps);
 // place the tracker in static storage.
 #pragma once
 
@@ -34,6 +34,7 @@
 #include "mptrack/math/detmath.h"
 #include "mptrack/model/mimo_atom.h"
 #include "mptrack/model/mimo_range_angle_map.h"
+#include "mptrack/profile.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -146,6 +147,8 @@ class VmpTracker {
   Status step(const ScanType& cube) {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, cube.time_us, counters_));
+    MPTRACK_PROFILE_STEP(g_vmp);
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kInput);
     const std::uint64_t caps_before = total_cap_hits(counters_);
     if (clock_.gap_exceeded(cube.time_us)) {
       ++counters_.gap_resets;
@@ -163,8 +166,14 @@ class VmpTracker {
       data_messages();
       amplitudes_and_existence();
     } else {
-      for (Track& t : tracks_) t.logit_xi = t.g;  // no data: the prior log-odds
+      // No data: the prior log-odds, and one window pass so that the filtered
+      // marginal the window freezes next (next_tail) belongs to its new oldest frame.
+      for (Track& t : tracks_) {
+        t.logit_xi = t.g;
+        counters_.numerical_repairs += smoother_.smooth(t.chain, static_cast<T>(params_.min_variance));
+      }
     }
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kOutput);
     const bool pruned = prune();
     if (usable) births(pruned);
     for (Track& t : tracks_) t.xi_prev = vmp::sigmoid(t.logit_xi);
@@ -244,6 +253,7 @@ class VmpTracker {
 
   // Steps 2 and 4 (eqs. (12)-(16)).
   void amplitudes_and_existence() {
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kAmplitudeExistence);
     const std::size_t n = tracks_.size();
     q_.reset(n, lambda_p_);
     fill_problem(n);
@@ -275,6 +285,7 @@ class VmpTracker {
 
   // Step 3: per track, strongest first (Gauss-Seidel over tracks).
   void data_messages() {
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kDataMessage);
     const std::size_t n = tracks_.size();
     for (std::size_t k = 0; k < n; ++k) {
       const T w = model::atom_norm2(basis_, tracks_[k].atom) * model::cx_norm2(tracks_[k].mu);
@@ -303,6 +314,7 @@ class VmpTracker {
       slot.has_msg = m.valid;
       slot.m = m.m;
       slot.omega = m.omega;
+      MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kChain);  // to the end of this object's turn
       for (std::size_t it = 0; it < params_.outer_iterations; ++it) {
         counters_.numerical_repairs += smoother_.smooth(t.chain, static_cast<T>(params_.min_variance));
         smoother_.update_gamma(t.chain, static_cast<T>(params_.gamma_shape_zeta),
@@ -346,26 +358,26 @@ class VmpTracker {
   // strong track's unexplained remainder, must not hide a new object elsewhere)
   // and accepts the first candidate whose existence log-odds exceed logit(1 - p_b).
   void births(bool refresh) {
+    MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kBirth);
     if (refresh) amplitudes_and_existence();
+    const T nve = static_cast<T>(kNV) * basis_.e_u();
+    // Incremental objective |s^H r|^2 / rho_S - ln rho_S, rho_S ~ ||s||^2 + lambda_p.
+    const auto score = [&](T r, T, T p) {
+      const T rho2 = basis_.rho(r) * basis_.rho(r);
+      const T den = rho2 * nve + lambda_p_;
+      return rho2 * p / den - dmath::dlog(den);
+    };
+    const auto coef = [&](std::size_t j) { return model::cx_scale(tracks_[j].mu, vmp::sigmoid(tracks_[j].logit_xi)); };
     for (std::size_t b = 0; b < params_.max_births_per_frame; ++b) {
+      residual(Cx{T(1), T(0)}, kMaxTracks, coef);
+      map_.evaluate(basis_, buf_re_.data(), buf_im_.data());
       bool born = false;
       std::size_t n_excl = 0;
       for (std::size_t attempt = 0; attempt < kPeakTries && !born; ++attempt) {
-        residual(Cx{T(1), T(0)}, kMaxTracks, [&](std::size_t j) {
-          return model::cx_scale(tracks_[j].mu, vmp::sigmoid(tracks_[j].logit_xi));
-        });
-        const T nve = static_cast<T>(kNV) * basis_.e_u();
-        // Incremental objective |s^H r|^2 / rho_S - ln rho_S, rho_S ~ ||s||^2 + lambda_p.
-        const auto peak = map_.best(
-            basis_, buf_re_.data(), buf_im_.data(),
-            [&](T r, T, T p) {
-              const T rho2 = basis_.rho(r) * basis_.rho(r);
-              const T den = rho2 * nve + lambda_p_;
-              return rho2 * p / den - dmath::dlog(den);
-            },
-            excl_.data(), n_excl, kExclRange_m, kExclSin);
+        const auto peak = map_.best(score, excl_.data(), n_excl, kExclRange_m, kExclSin);
         if (!peak.found) return;
         excl_[n_excl++] = peak;
+        if (attempt > 0) residual(Cx{T(1), T(0)}, kMaxTracks, coef);  // refine_candidate overwrote it
         const vmp::PositionMessage<T> m = refine_candidate(peak);
         if (!m.valid || !in_region(m.m(0), m.m(1), T(0))) continue;
         if (!(candidate_logit(m) > logit_birth_)) continue;
