@@ -194,6 +194,9 @@ TEST_CASE("compare on raw ADC: every pipeline sees the same frames and agrees wi
   const AdcSummary single = run_adc_monte_carlo(one);
   CHECK(rows[1].base.mean_ospa == doctest::Approx(single.base.mean_ospa).epsilon(1e-12));
   CHECK(rows[1].base.measurement_checksum == single.base.measurement_checksum);
+  // Detection statistics are per tracker: the same as the single-tracker run's.
+  CHECK(rows[1].drone_detection_rate == doctest::Approx(single.drone_detection_rate).epsilon(1e-12));
+  CHECK(rows[1].ring.frames_processed == single.ring.frames_processed);
   // frames.csv: a header and one row per (tracker, frame).
   std::ifstream f(dir / "frames.csv");
   std::string line;
@@ -219,6 +222,8 @@ TEST_CASE("compare on raw ADC: vmp consumes the frame itself, sbl-gnn the SBL de
   CHECK(rows[0].base.mean_measurements == 0.0);
   CHECK(rows[0].stages.frontend.max_us == 0.0);
   CHECK(rows[0].base.counters.scans == 6);
+  CHECK(rows[0].drone_detection_rate == 0.0);  // no detector in its pipeline
+  CHECK(rows[2].drone_detection_rate > 0.0);
   // The two detectors give different detections of the same frames.
   CHECK(rows[1].base.mean_measurements > 0.0);
   CHECK(rows[1].base.measurement_checksum != rows[2].base.measurement_checksum);

@@ -40,6 +40,16 @@ nlohmann::ordered_json lat_json(const LatencyStats& s) {
 
 namespace {
 
+void finish_frontend(const FrontEndTotals& t, AdcSummary& out) {
+  out.ring = t.ring;
+  out.mean_detections = out.base.mean_measurements;
+  out.drone_detection_rate =
+      t.drone_frames > 0 ? static_cast<double>(t.matched) / static_cast<double>(t.drone_frames) : 0.0;
+  out.range_error_rms_m = t.matched > 0 ? std::sqrt(t.sum_range_err2 / static_cast<double>(t.matched)) : 0.0;
+  out.bearing_error_rms_deg =
+      t.matched > 0 ? std::sqrt(t.sum_bearing_err2 / static_cast<double>(t.matched)) * kRadToDeg : 0.0;
+}
+
 /// Raw-ADC statistics on top of the aggregator's, per tracker: OSPA by
 /// phase, track start delay, stage latencies; frontend.csv (first tracker).
 class AdcRunObserver final : public RunObserver {
@@ -80,6 +90,7 @@ class AdcRunObserver final : public RunObserver {
       write_frontend_rows(rec.run, recs);
     }
     p.records.insert(p.records.end(), recs.begin(), recs.end());
+    add_totals(p.totals, source_.totals());
   }
 
   void finish(std::size_t tracker, AdcSummary& out) const {
@@ -99,10 +110,24 @@ class AdcRunObserver final : public RunObserver {
       if (r.processed) v.push_back(r.range_us + r.doppler_us + r.angle_us + r.cfar_us);
     }
     out.stages.frontend = latency_stats(std::move(v));
+    finish_frontend(p.totals, out);
   }
 
  private:
+  static void add_totals(FrontEndTotals& sum, const FrontEndTotals& t) {
+    sum.ring.frames_offered += t.ring.frames_offered;
+    sum.ring.frames_pushed += t.ring.frames_pushed;
+    sum.ring.frames_processed += t.ring.frames_processed;
+    sum.ring.dropped_frames += t.ring.dropped_frames;
+    sum.ring.producer_late += t.ring.producer_late;
+    sum.drone_frames += t.drone_frames;
+    sum.matched += t.matched;
+    sum.sum_range_err2 += t.sum_range_err2;
+    sum.sum_bearing_err2 += t.sum_bearing_err2;
+  }
+
   struct PerTracker {
+    FrontEndTotals totals;  ///< summed over this tracker's deliveries
     std::map<std::string, double> phase_sum;
     std::map<std::string, std::uint64_t> phase_n;
     std::map<std::uint32_t, double> delay_sum;
@@ -148,15 +173,6 @@ class AdcRunObserver final : public RunObserver {
   std::vector<PerTracker> per_tracker_;
 };
 
-void finish_frontend(const FrontEndTotals& t, AdcSummary& out) {
-  out.ring = t.ring;
-  out.mean_detections = out.base.mean_measurements;
-  out.drone_detection_rate =
-      t.drone_frames > 0 ? static_cast<double>(t.matched) / static_cast<double>(t.drone_frames) : 0.0;
-  out.range_error_rms_m = t.matched > 0 ? std::sqrt(t.sum_range_err2 / static_cast<double>(t.matched)) : 0.0;
-  out.bearing_error_rms_deg =
-      t.matched > 0 ? std::sqrt(t.sum_bearing_err2 / static_cast<double>(t.matched)) * kRadToDeg : 0.0;
-}
 
 }  // namespace
 
@@ -197,7 +213,6 @@ std::vector<AdcSummary> run_adc_loop(const AdcRunConfig& cfg, const std::vector<
     out[t].ospa_order = sc.ospa_order;
     out[t].phases = sc.phases;
     adc_stats.finish(t, out[t]);
-    finish_frontend(source.totals(), out[t]);
   }
   if (outputs) {
     char title[200];

@@ -138,11 +138,8 @@ void AdcScanSource::deliver(const ScanStep& step, FrameInput input) {
   const StreamCounters rc = run_stream(
       *ring, sc_.num_frames, opt, [&](std::uint32_t k, StreamFrame& slot) { slot.cube = cubes_[k - 1]; },
       [&](const StreamFrame& f, std::uint64_t queue_ns) { consume(f, queue_ns, step, input); });
-  totals_.ring.frames_offered += rc.frames_offered;
-  totals_.ring.frames_pushed += rc.frames_pushed;
-  totals_.ring.frames_processed += rc.frames_processed;
-  totals_.ring.dropped_frames += rc.dropped_frames;
-  totals_.ring.producer_late += rc.producer_late;
+  totals_ = FrontEndTotals{};
+  totals_.ring = rc;
   label_run();
 }
 

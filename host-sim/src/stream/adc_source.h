@@ -29,9 +29,9 @@ struct FrameRecord {
   bool processed = false;
 };
 
-/// Front-end totals over every delivery so far.
+/// Detection totals of one delivery (one tracker's pass over a run).
 struct FrontEndTotals {
-  StreamCounters ring;                 ///< summed over deliveries
+  StreamCounters ring;
   std::uint64_t drone_frames = 0;      ///< (alive drone, processed frame) pairs
   std::uint64_t matched = 0;           ///< ... with a detection within the gate
   double sum_range_err2 = 0.0;         ///< [m^2] over the matches
@@ -52,6 +52,7 @@ class AdcScanSource final : public ScanSource {
   const adc::AdcScenario& scenario() const { return sc_; }
   /// The last delivery's frames (index frame-1).
   const std::vector<FrameRecord>& frame_records() const { return records_; }
+  /// The last delivery's totals (what that tracker was given).
   const FrontEndTotals& totals() const { return totals_; }
   /// The per-stage table of a -DMPTRACK_PROFILE=ON build (no-op otherwise).
   void print_stage_profile() const { stage_profile_.print(); }
