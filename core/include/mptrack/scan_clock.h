@@ -18,6 +18,7 @@
 // installs it at init(). No limit until it is set.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "mptrack/status.h"
@@ -66,6 +67,18 @@ class ScanClock {
   /// elapsed_s() returns its first_dt_s. Admission is unaffected: the
   /// caller has admitted the current scan already.
   void restart() { has_time_ = false; }
+
+  /// The gap rule of a tracker whose whole state is one track table: if
+  /// time_us is a gap (gap_exceeded()), counts it (gap_resets, and the
+  /// live_tracks dropped in tracks_deleted), restarts the clock and returns
+  /// true; the caller then clears its table.
+  bool restart_on_gap(std::uint64_t time_us, std::size_t live_tracks, TrackerCounters& c) {
+    if (!gap_exceeded(time_us)) return false;
+    ++c.gap_resets;
+    c.tracks_deleted += live_tracks;
+    restart();
+    return true;
+  }
 
   /// Time since the previous accepted scan [s]; first_dt_s for the first scan.
   template <class T>

@@ -111,12 +111,7 @@ class GnnTracker {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
     const std::uint64_t caps_before = total_cap_hits(counters_);
-    if (clock_.gap_exceeded(scan.time_us)) {
-      ++counters_.gap_resets;
-      counters_.tracks_deleted += tracks_.size();
-      tracks_.clear();
-      clock_.restart();
-    }
+    if (clock_.restart_on_gap(scan.time_us, tracks_.size(), counters_)) tracks_.clear();
     const std::size_t invalid = select_valid(scan);
     if (clock_.has_time()) {
       const T dt = clock_.elapsed_s(scan.time_us, T(0));

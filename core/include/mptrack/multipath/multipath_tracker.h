@@ -112,12 +112,7 @@ class MultipathMfbpTracker {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
     const std::uint64_t caps_before = total_cap_hits(counters_);
-    if (clock_.gap_exceeded(scan.time_us)) {
-      ++counters_.gap_resets;
-      counters_.tracks_deleted += tracks_.size();
-      tracks_.clear();
-      clock_.restart();
-    }
+    if (clock_.restart_on_gap(scan.time_us, tracks_.size(), counters_)) tracks_.clear();
     const std::size_t rejected = select_valid(scan);
     set_scan_noise(scan.has_doppler);
     predict(clock_.has_time() ? clock_.elapsed_s(scan.time_us, T(0)) : T(0));

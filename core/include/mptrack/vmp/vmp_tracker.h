@@ -150,12 +150,7 @@ class VmpTracker {
     MPTRACK_PROFILE_STEP(g_vmp);
     MPTRACK_PROFILE_STAGE(g_vmp, VmpStage::kInput);
     const std::uint64_t caps_before = total_cap_hits(counters_);
-    if (clock_.gap_exceeded(cube.time_us)) {
-      ++counters_.gap_resets;
-      counters_.tracks_deleted += tracks_.size();
-      tracks_.clear();
-      clock_.restart();
-    }
+    if (clock_.restart_on_gap(cube.time_us, tracks_.size(), counters_)) tracks_.clear();
     const T dt = clock_.elapsed_s(cube.time_us, static_cast<T>(params_.frame_period_s));
     ++counters_.measurements_in;
     const bool usable = spectrum_.process(cube) == Status::kOk;
