@@ -105,9 +105,13 @@ std::vector<mptrack::Scan<float, N>> make_scans(const Scene& s, int num_scans) {
       for (std::uint32_t p = 0; p < g.num_paths; ++p) {
         if (rng.uniform() >= s.pd) continue;
         const auto y = mptrack::model::othr_measure(x, g.paths[p], g.baseline_km);
-        push(y(0) + g.noise.range_std_m * 1e-3 * rng.gaussian(),
-             y(1) + g.noise.doppler_std_mps * 1e-3 * rng.gaussian(),
-             y(2) + g.noise.azimuth_std_rad * rng.gaussian());
+        // Draws in a fixed order (azimuth, range rate, range): function
+        // arguments are evaluated in an unspecified order, which differs
+        // between compilers' targets (x86-64 and aarch64 gave different scenes).
+        const double n_az = g.noise.azimuth_std_rad * rng.gaussian();
+        const double n_rd = g.noise.doppler_std_mps * 1e-3 * rng.gaussian();
+        const double n_r = g.noise.range_std_m * 1e-3 * rng.gaussian();
+        push(y(0) + n_r, y(1) + n_rd, y(2) + n_az);
       }
     }
     const int nc = poisson(s.clutter_mean, rng);
