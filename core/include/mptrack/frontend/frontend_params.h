@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "mptrack/frontend/reference_chirp.h"
 #include "mptrack/frontend/window.h"
 #include "mptrack/math/constants.h"
 #include "mptrack/status.h"
@@ -134,12 +135,9 @@ struct FrontEndParams {
 /// lambda [m].
 inline double wavelength_m(const FrontEndParams& p) { return kSpeedOfLight_mps / p.carrier_hz; }
 
-/// Number of reference chirp samples L = round(T_Tx f_s).
+/// Number of reference chirp samples L = round(T_Tx f_s) (reference_chirp.h; 0: does not fit).
 inline std::size_t chirp_samples(const FrontEndParams& p) {
-  const double x = p.chirp_duration_s * p.sample_rate_hz + 0.5;
-  // NaN or beyond any cap maps to 0 ("does not fit", init() rejects it):
-  // casting an out-of-range double is undefined (fuzz finding F6).
-  return (x >= 1.0 && x < 1e9) ? static_cast<std::size_t>(x) : std::size_t{0};
+  return chirp_length(p.chirp_duration_s, p.sample_rate_hz);
 }
 
 /// Range per fast-time sample c / (2 f_s) [m].

@@ -26,6 +26,7 @@
 #include <cstddef>
 
 #include "mptrack/dsp/fft.h"
+#include "mptrack/frontend/reference_chirp.h"
 #include "mptrack/frontend/radar_cube.h"
 #include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
@@ -62,12 +63,10 @@ class MimoSpectrum {
     MPTRACK_TRY(check_positive(c.chirp_duration_s));
     MPTRACK_TRY(check_positive(c.sample_rate_hz));
     MPTRACK_TRY(check_positive(c.noise_variance_v2));
-    const double lx = c.chirp_duration_s * c.sample_rate_hz + 0.5;
-    MPTRACK_TRY(check(lx >= 1.0 && lx < static_cast<double>(Caps::kNumSamples) + 1.0));
-    const std::size_t len = static_cast<std::size_t>(lx);
+    const std::size_t len = chirp_length(c.chirp_duration_s, c.sample_rate_hz);
+    MPTRACK_TRY(check(len >= 1 && len <= Caps::kNumSamples));
     MPTRACK_TRY(fft_.init());
-    const double kappa = c.bandwidth_hz / c.chirp_duration_s;
-    const double centre = 0.5 * static_cast<double>(len - 1);
+    const ReferenceChirp chirp(c.bandwidth_hz, c.chirp_duration_s, c.sample_rate_hz, len);
     const double inv_sqrt_n = 1.0 / std::sqrt(static_cast<double>(kN));
     const double two_pi = dmath::kTwoPi<double>;
     // Unitary DFT of the reference chirp, direct sum in double (init only).
@@ -77,11 +76,10 @@ class MimoSpectrum {
       double sr = 0.0;
       double si = 0.0;
       for (std::size_t i = 0; i < len; ++i) {
-        const double t = (static_cast<double>(i) - centre) / c.sample_rate_hz;
-        double us = 0.0;
         double uc = 1.0;
-        dmath::dsincos(dmath::kPi<double> * kappa * t * t, us, uc);
-        // exp(-j 2 pi kk i / N), argument reduced exactly with integers.
+        double us = 0.0;
+        chirp.sample(i, uc, us);
+        // e^{-j 2 pi kk i / N}, argument reduced exactly with integers.
         double es = 0.0;
         double ec = 1.0;
         dmath::dsincos(-two_pi * static_cast<double>((kk * i) % kN) / static_cast<double>(kN), es, ec);

@@ -60,8 +60,7 @@ class RangeMatchedFilter {
       cal_re_[v] = 1.0f;
       cal_im_[v] = 0.0f;
     }
-    const double kappa = p.bandwidth_hz / p.chirp_duration_s;  // [Hz/s]
-    const double centre = 0.5 * static_cast<double>(len - 1);
+    const ReferenceChirp chirp(p.bandwidth_hz, p.chirp_duration_s, p.sample_rate_hz, len);
     for (std::size_t i = 0; i < kM; ++i) {
       ref_re_[i] = 0.0f;
       ref_im_[i] = 0.0f;
@@ -69,10 +68,9 @@ class RangeMatchedFilter {
     double sum_w = 0.0;
     double sum_w2 = 0.0;
     for (std::size_t i = 0; i < len; ++i) {
-      const double t = (static_cast<double>(i) - centre) / p.sample_rate_hz;
-      double s = 0.0;
       double c = 1.0;
-      mptrack::dmath::dsincos(mptrack::dmath::kPi<double> * kappa * t * t, s, c);
+      double s = 0.0;
+      chirp.sample(i, c, s);
       const double w = window_value(p.range_window, i, len);
       sum_w += w;
       sum_w2 += w * w;

@@ -83,7 +83,7 @@ class MimoRangeAngleMap {
         } else {
           ph = cx_mul(ph, step);
         }
-        const Cx<T> w = cx_cmul(b.u(k), ph);  // U_k^* exp(+j 2 pi f_k tau)
+        const Cx<T> w = cx_cmul(b.u(k), ph);  // U_k^* e^{+j 2 pi f_k tau}
         for (std::size_t v = 0; v < NV; ++v) mf[v] = cx_add(mf[v], cx_mul(w, Cx<T>{r_re[v * KB + k], r_im[v * KB + k]}));
       }
       for (std::size_t h = 0; h < n_angle_; ++h) {

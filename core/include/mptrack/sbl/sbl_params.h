@@ -16,7 +16,7 @@ namespace mptrack {
 struct SblDefaultCaps {
   static constexpr std::size_t kMaxComponents = 8;  ///< components (detections) per frame
   static constexpr std::size_t kMaxRangeCells = 96;  ///< residual-map range cells (100 m at 1.17 m: 86)
-  static constexpr std::size_t kMaxAngleCells = 64;  ///< residual-map sin(theta) cells (step 1/32: 64)
+  static constexpr std::size_t kMaxAngleCells = 64;  ///< residual-map cells in sin theta (step 1/32: 64)
   static constexpr std::size_t kMaxIterations = 50;  ///< ceiling on SblParams::max_iterations
 };
 
@@ -49,7 +49,7 @@ struct SblParams {
   double max_range_m = 100.0;                ///< range gate upper end [m] (seed 004: R_max)
   double max_abs_bearing_rad = 1.3089969389957472;  ///< |theta| <= this [rad], (0, 1.5]; 75 deg
   double range_step_m = 1.17;                ///< residual-map range step [m] (1024-point IFFT grid)
-  double sin_step = 0.03125;                 ///< residual-map sin(theta) step [-] (64 beams)
+  double sin_step = 0.03125;                 ///< residual-map step in sin theta [-] (64 beams)
   // SBL (docs/algorithms/sbl.md §Algorithm).
   double eta = 12.8;                         ///< threshold on the normalised residual peak and on
                                              ///< the component SNR [-]: ln(N_eff / P_FA),
