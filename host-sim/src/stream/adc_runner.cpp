@@ -97,7 +97,6 @@ class AdcRunObserver final : public RunObserver {
     const PerTracker& p = per_tracker_[tracker];
     for (const auto& [name, v] : p.phase_sum) out.ospa_by_phase[name] = v / static_cast<double>(p.phase_n.at(name));
     for (const auto& [id, v] : p.delay_sum) out.start_delay[id] = v / static_cast<double>(p.delay_n.at(id));
-    out.cardinality_per_frame = out.base.confirmed_mean_per_scan;
     out.stages.range = stats_of(p.records, &FrameRecord::range_us);
     out.stages.doppler = stats_of(p.records, &FrameRecord::doppler_us);
     out.stages.angle = stats_of(p.records, &FrameRecord::angle_us);
@@ -259,7 +258,7 @@ nlohmann::ordered_json adc_summary_to_json(const AdcSummary& s) {
   nlohmann::ordered_json d = nlohmann::ordered_json::object();
   for (const auto& [id, v] : s.start_delay) d[std::to_string(id)] = v;
   j["track_start_delay_frames"] = d;
-  j["mean_confirmed_per_frame"] = s.cardinality_per_frame;
+  j["mean_confirmed_per_frame"] = s.base.confirmed_mean_per_scan;  // kept for scripts; = cardinality_per_scan.mean_confirmed
   return j;
 }
 

@@ -47,7 +47,6 @@ struct AdcSummary {
   double bearing_error_rms_deg = 0.0;
   std::map<std::string, double> ospa_by_phase;     ///< mean OSPA over runs x the phase's frames [m]
   std::map<std::uint32_t, double> start_delay;     ///< drone id -> mean frames from birth to a confirmed track within c
-  std::vector<double> cardinality_per_frame;       ///< mean confirmed tracks per frame (index frame-1; = base.confirmed_mean_per_scan)
 };
 
 /// Runs everything for config.tracker and writes the run outputs
