@@ -2,6 +2,10 @@
 // MultipathMfbpTracker<float, LargeCaps> (LargeCaps: 1024 detections per
 // scan, for Nc = 400), configured from an OTHR scenario: its paths (heights
 // and pd), baseline, slant-coordinate region, noise and clutter rate.
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 #include "mptrack/multipath/multipath_tracker.h"
 #include "trackers/core_adapter.h"
 #include "tracker_registry.h"
@@ -11,6 +15,29 @@ namespace mptrack::sim {
 namespace {
 
 using Tracker = MultipathMfbpTracker<float, LargeCaps>;
+
+/// The harness reports the smoothed estimate 3 scans late (48 s at the
+/// scenario's 16 s period; docs/algorithms/multipath.md §Fixed-lag smoother).
+constexpr std::uint32_t kDefaultLagScans = 3;
+
+/// `--mfbp-param smoothing_lag_scans=N` (0 = the filter's estimate at once).
+std::string apply_overrides(const std::vector<std::string>& overrides, MultipathParams<float>& p) {
+  for (const std::string& kv : overrides) {
+    const std::size_t eq = kv.find('=');
+    const std::string name = kv.substr(0, eq);
+    if (eq == std::string::npos || name != "smoothing_lag_scans") {
+      return "mfbp-multipath: unknown parameter \"" + kv + "\" (known: smoothing_lag_scans=N)";
+    }
+    char* end = nullptr;
+    const unsigned long v = std::strtoul(kv.c_str() + eq + 1, &end, 10);
+    if (end == kv.c_str() + eq + 1 || *end != '\0' || v > Tracker::kMaxLag) {
+      return "mfbp-multipath: smoothing_lag_scans = " + kv.substr(eq + 1) + ": must be an integer in [0, " +
+             std::to_string(Tracker::kMaxLag) + "] (Caps::kMaxSmoothingLag)";
+    }
+    p.smoothing_lag_scans = static_cast<std::uint32_t>(v);
+  }
+  return "";
+}
 
 class MultipathAdapter final : public CoreTrackerAdapter<Tracker> {
  public:
@@ -39,6 +66,9 @@ class MultipathAdapter final : public CoreTrackerAdapter<Tracker> {
     for (const scenario::ClutterSpec& c : s.clutter) clutter += c.mean_count * setup.clutter_scale;
     p.clutter_mean_count = static_cast<float>(clutter > 1.0 ? clutter : 1.0);
     p.max_gap_s = static_cast<float>(4.0 * s.scan_period_s);
+    p.smoothing_lag_scans = kDefaultLagScans;
+    const std::string error = apply_overrides(setup.mfbp_params, p);
+    if (!error.empty()) return error;
     return init_tracker(p);
   }
 };

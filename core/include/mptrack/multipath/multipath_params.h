@@ -93,6 +93,10 @@ struct MultipathParams {
 
   // --- reporting, gaps, numerics ---
   bool report_tentative = false;  ///< true: also report tracks below confirm_existence
+  /// Scans the output is held back for fixed-lag smoothing (0 = the filter's
+  /// estimate at once; at most Caps::kMaxSmoothingLag; docs/algorithms/
+  /// multipath.md §Fixed-lag smoother) [scans].
+  std::uint32_t smoothing_lag_scans = 0;
   T max_gap_s = T(120);           ///< a longer gap drops every track (scan_clock.h) [s]
   T min_variance = T(1e-14);      ///< diagonal floor of the last-resort covariance repair [-]
 

@@ -23,7 +23,8 @@
 //      the last delete_window scans is below delete_existence;
 //   5. births from multi-detection groups among detections the association
 //      left to clutter (multipath/group_birth.h);
-//   6. report the counted tracks (Cartesian ground frame, path_track.h).
+//   6. report the counted tracks (Cartesian ground frame, path_track.h), at
+//      once or smoothed smoothing_lag_scans later (multipath/fixed_lag_smoother.h).
 //
 // Memory: everything is a member, sized by Caps (kMaxTargets x kMaxPaths
 // pseudo-targets, kMaxGatePairs each); place the tracker in static storage.
@@ -46,11 +47,14 @@
 #include "mptrack/model/measurement_validator.h"
 #include "mptrack/model/othr_measurement.h"
 #include "mptrack/model/spd_guard_scaled.h"
+#include "mptrack/multipath/detection_intake.h"
+#include "mptrack/multipath/fixed_lag_smoother.h"
 #include "mptrack/multipath/group_birth.h"
 #include "mptrack/multipath/multipath_caps.h"
 #include "mptrack/multipath/multipath_params.h"
 #include "mptrack/multipath/path_fusion.h"
 #include "mptrack/multipath/path_track.h"
+#include "mptrack/multipath/track_output.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -70,7 +74,10 @@ class MultipathMfbpTracker {
   using Params = MultipathParams<T>;
   using ScanType = Scan<T, Caps::kMaxMeasurements>;
   using Estimate = ScanEstimate<T, Caps::kMaxTargets, Caps::kMaxClutterComponents>;
-  using OutputQueue = StaticVector<Estimate, 1>;  ///< online: one finalised scan per step
+  static constexpr std::size_t kMaxLag = multipath::kMaxSmoothingLag<Caps>;
+  /// One finalised scan per step; flush() and a restart after a gap give
+  /// every scan the smoother still holds.
+  using OutputQueue = StaticVector<Estimate, kMaxLag + 1>;
 
   static constexpr std::size_t kMaxTracks = Caps::kMaxTargets;
   static constexpr std::size_t kMaxMeasurements = Caps::kMaxMeasurements;
@@ -83,6 +90,7 @@ class MultipathMfbpTracker {
   static Status validate(const Params& p, ParamError* where = nullptr) {
     MPTRACK_TRY(p.validate(where));
     MPTRACK_CHECK_PARAM(where, "num_paths", check(p.num_paths <= kMaxPaths));
+    MPTRACK_CHECK_PARAM(where, "smoothing_lag_scans", check(p.smoothing_lag_scans <= kMaxLag));
     return Status::kOk;
   }
 
@@ -95,6 +103,7 @@ class MultipathMfbpTracker {
     derive_constants();
     tracks_.clear();
     outputs_.clear();
+    smoother_.reset();
     counters_ = TrackerCounters{};
     next_id_ = 1;
     clock_.start(params_.max_gap_s);
@@ -112,8 +121,13 @@ class MultipathMfbpTracker {
     outputs_.clear();
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
     const std::uint64_t caps_before = total_cap_hits(counters_);
-    if (clock_.restart_on_gap(scan.time_us, tracks_.size(), counters_)) tracks_.clear();
-    const std::size_t rejected = select_valid(scan);
+    if (clock_.restart_on_gap(scan.time_us, tracks_.size(), counters_)) {
+      drain_smoother();  // the held-back scans belong to the old tracks
+      tracks_.clear();
+    }
+    model::MeasurementValidator<T> check = params_.region.validator();
+    check.doppler_span_mps = params_.range_rate_span_mps;
+    const std::size_t rejected = in_.select(scan, check, counters_);
     set_scan_noise(scan.has_doppler);
     predict(clock_.has_time() ? clock_.elapsed_s(scan.time_us, T(0)) : T(0));
     for (std::uint32_t r = 0; r < params_.vb_iterations; ++r) {
@@ -122,16 +136,22 @@ class MultipathMfbpTracker {
     }
     manage();
     births();
-    report(scan);
+    if (params_.smoothing_lag_scans == 0) {
+      report(scan);
+    } else {
+      report_lagged(scan);
+    }
     clock_.advance(scan.time_us);
     ++counters_.scans;
     return accepted_status(counters_, caps_before, rejected > 0);
   }
 
-  /// End of data. An online filter holds nothing: clears outputs().
+  /// End of data: outputs() gets the scans the smoother still holds.
   Status flush() {
     outputs_.clear();
-    return initialized_ ? Status::kOk : Status::kNotInitialized;
+    if (!initialized_) return Status::kNotInitialized;
+    drain_smoother();
+    return Status::kOk;
   }
 
   const OutputQueue& outputs() const { return outputs_; }
@@ -178,64 +198,9 @@ class MultipathMfbpTracker {
     for (int r = 0; r < 3; ++r) half_ln_det_ += T(0.5) * dmath::dlog(scan_r_var_(r));
   }
 
-  // Step 1.
-  std::size_t select_valid(const ScanType& scan) {
-    valid_.clear();
-    std::size_t invalid = 0;
-    std::size_t duplicate = 0;
-    counters_.measurements_in += scan.measurements.size();
-    model::MeasurementValidator<T> check = params_.region.validator();
-    check.check_doppler = scan.has_doppler;
-    check.doppler_span_mps = params_.range_rate_span_mps;
-    for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
-      const Measurement<T>& m = scan.measurements[j];
-      kept_[j] = false;
-      if (!check.valid(m)) {
-        ++invalid;
-      } else if (is_duplicate(scan, j, [this](std::size_t i) { return kept_[i]; })) {
-        ++duplicate;
-      } else {
-        kept_[j] = true;
-        const std::size_t k = valid_.size();
-        y_[k] << m.range_m * T(1e-3), scan.has_doppler ? m.doppler_mps * T(1e-3) : T(0), m.azimuth_rad;
-        static_cast<void>(valid_.push_back(static_cast<std::uint16_t>(j)));  // scan capacity
-      }
-    }
-    counters_.measurements_invalid += invalid;
-    counters_.measurements_duplicate += duplicate;
-    sort_by_range();
-    return invalid + duplicate;
-  }
-
-  // by_range_: valid detections in increasing slant range (index breaks
-  // ties: a total order, the same on every target). Gating searches it for
-  // the range window of a pseudo-target; births sweep it.
-  void sort_by_range() {
-    const std::size_t n = valid_.size();
-    for (std::size_t j = 0; j < n; ++j) by_range_[j] = static_cast<std::uint16_t>(j);
-    std::sort(by_range_.begin(), by_range_.begin() + static_cast<std::ptrdiff_t>(n),
-              [this](std::uint16_t a, std::uint16_t b) {
-                return y_[a](0) < y_[b](0) || (!(y_[b](0) < y_[a](0)) && a < b);
-              });
-  }
-
-  // First position in by_range_ whose slant range is >= r_km (binary search).
-  std::size_t first_at_or_above(T r_km) const {
-    std::size_t lo = 0;
-    std::size_t hi = valid_.size();
-    while (lo < hi) {
-      const std::size_t mid = lo + (hi - lo) / 2;
-      if (y_[by_range_[mid]](0) < r_km) {
-        lo = mid + 1;
-      } else {
-        hi = mid;
-      }
-    }
-    return lo;
-  }
-
   // Step 2.
   void predict(T dt_s) {
+    last_dt_s_ = dt_s;
     const T q_range = params_.range_psd_m2ps3 * T(1e-6);  // km^2/s^3
     for (Track& t : tracks_) {
       if (dt_s > T(0)) {
@@ -251,7 +216,7 @@ class MultipathMfbpTracker {
 
   // Step 3a: pseudo-targets, gated pairs and their evidence, then BP.
   void associate(bool first_pass) {
-    const std::size_t nv = valid_.size();
+    const std::size_t nv = in_.valid.size();
     has_bp_ = false;
     if (tracks_.empty() || nv == 0) {
       for (std::size_t i = 0; i < tracks_.size(); ++i) pseudo_[i].fill(-1);
@@ -282,10 +247,10 @@ class MultipathMfbpTracker {
     std::size_t dropped = 0;
     // Only detections within the gate's range extent sqrt(gamma S_rr) can pass.
     const T half = std::sqrt(params_.gate_chi2) * lin_.L(0, 0);
-    for (std::size_t q = first_at_or_above(lin_.h(0) - half); q < valid_.size(); ++q) {
-      const std::size_t j = by_range_[q];
-      if (y_[j](0) > lin_.h(0) + half) break;
-      model::OthrMeas<T> v = y_[j] - lin_.h;
+    for (std::size_t q = in_.first_at_or_above(lin_.h(0) - half); q < in_.valid.size(); ++q) {
+      const std::size_t j = in_.by_range[q];
+      if (in_.y[j](0) > lin_.h(0) + half) break;
+      model::OthrMeas<T> v = in_.y[j] - lin_.h;
       if (!has_doppler_) v(1) = T(0);
       const T d2 = multipath::mahalanobis2(lin_, v);
       if (!(d2 <= params_.gate_chi2)) continue;
@@ -332,7 +297,7 @@ class MultipathMfbpTracker {
       const std::size_t j = gate_j_[k];
       T d = gate_d2_[k];
       if (!predictive) {
-        const model::OthrMeas<T> v = y_[j] - lin_.h;
+        const model::OthrMeas<T> v = in_.y[j] - lin_.h;
         d = v(0) * v(0) / scan_r_var_(0) + v(2) * v(2) / scan_r_var_(2);
         if (has_doppler_) d += v(1) * v(1) / scan_r_var_(1);
       }
@@ -355,10 +320,10 @@ class MultipathMfbpTracker {
         for (std::size_t e = bp_.edge_begin(ui); e < bp_.edge_end(ui); ++e) {
           const T a = bp_.edge_belief(e);
           synth_w_[p] += a;
-          synth_y_[p] += a * y_[bp_.edge_meas(e)];
+          synth_y_[p] += a * in_.y[bp_.edge_meas(e)];
           if (a > best) {
             best = a;
-            t.measurement_index = static_cast<std::int32_t>(valid_[bp_.edge_meas(e)]);
+            t.measurement_index = static_cast<std::int32_t>(in_.valid[bp_.edge_meas(e)]);
           }
         }
       }
@@ -413,8 +378,8 @@ class MultipathMfbpTracker {
   // Step 5: groups of leftover detections, swept in slant range.
   void births() {
     std::size_t n = 0;
-    for (std::size_t q = 0; q < valid_.size(); ++q) {  // in slant-range order
-      const std::size_t j = by_range_[q];
+    for (std::size_t q = 0; q < in_.valid.size(); ++q) {  // in slant-range order
+      const std::size_t j = in_.by_range[q];
       const T clutter = has_bp_ ? bp_.clutter_belief(0, j) : T(1);
       used_[j] = false;
       if (clutter >= params_.birth_clutter_belief) cand_[n++] = static_cast<std::uint16_t>(j);
@@ -429,8 +394,8 @@ class MultipathMfbpTracker {
       members[m++] = static_cast<std::uint16_t>(ja);
       for (std::size_t b = a + 1; b < n && m < max_members; ++b) {
         const std::size_t jb = cand_[b];
-        if (y_[jb](0) - y_[ja](0) > params_.group_range_m * T(1e-3)) break;  // sorted by range
-        if (!used_[jb] && close(y_[ja], y_[jb])) members[m++] = static_cast<std::uint16_t>(jb);
+        if (in_.y[jb](0) - in_.y[ja](0) > params_.group_range_m * T(1e-3)) break;  // sorted by range
+        if (!used_[jb] && close(in_.y[ja], in_.y[jb])) members[m++] = static_cast<std::uint16_t>(jb);
       }
       if (m < params_.min_group_size) continue;
       if (try_birth(members.data(), m)) {
@@ -448,7 +413,7 @@ class MultipathMfbpTracker {
 
   bool try_birth(const std::uint16_t* members, std::size_t m) {
     std::array<model::OthrMeas<T>, multipath::kMaxGroup> ys{};
-    for (std::size_t k = 0; k < m; ++k) ys[k] = y_[members[k]];
+    for (std::size_t k = 0; k < m; ++k) ys[k] = in_.y[members[k]];
     model::OthrMeas<T> sigma;
     for (int r = 0; r < 3; ++r) sigma(r) = std::sqrt(scan_r_var_(r));
     multipath::GroupHypothesis<T> second;
@@ -456,9 +421,9 @@ class MultipathMfbpTracker {
         ys.data(), m, params_.paths.data(), params_.num_paths, params_.baseline_km, sigma, &second,
         params_.birth_distinct_range_m * T(1e-3));
     if (!h.valid || h.spread_per_dof > params_.birth_max_spread) return false;
-    if (!spawn(h, m, valid_[members[0]])) return false;
+    if (!spawn(h, m, in_.valid[members[0]])) return false;
     if (params_.birth_ambiguous_both && second.valid && !(second.spread_per_dof > params_.birth_max_spread)) {
-      static_cast<void>(spawn(second, m, valid_[members[0]]));
+      static_cast<void>(spawn(second, m, in_.valid[members[0]]));
     }
     return true;
   }
@@ -475,25 +440,43 @@ class MultipathMfbpTracker {
     return true;
   }
 
-  // Step 6.
+  // Step 6, filter: the counted tracks of this scan.
   void report(const ScanType& scan) {
-    static_cast<void>(outputs_.resize(1));  // capacity 1
-    Estimate& e = outputs_[0];
-    e.time_us = scan.time_us;
-    e.scan_index = static_cast<std::uint32_t>(counters_.scans);
-    e.tracks.clear();
-    e.clutter.clear();
+    Estimate& e = open_estimate(scan.time_us, static_cast<std::uint32_t>(counters_.scans));
     for (const Track& t : tracks_) {
-      const bool counted = t.counted;
-      if (!counted && !params_.report_tentative) continue;
-      TrackReport<T> r;
-      r.id = t.id;
-      multipath::ground_to_cartesian(t.x, t.P, r.state, r.covariance);
-      r.existence = t.existence;
-      r.confirmed = counted;
-      r.measurement_index = t.measurement_index;
-      static_cast<void>(e.tracks.push_back(r));  // tracks_.size() <= capacity
+      if (!t.counted && !params_.report_tentative) continue;
+      multipath::add_ground_report(e, t.id, t.x, t.P, t.existence, t.counted, t.measurement_index);
     }
+  }
+
+  // Step 6, fixed lag: record this scan, report the one smoothing_lag_scans back.
+  void report_lagged(const ScanType& scan) {
+    static_cast<void>(smoother_.open_scan(scan.time_us, static_cast<std::uint32_t>(counters_.scans)));  // popped below
+    for (const Track& t : tracks_) smoother_.record(multipath::lag_entry(t, last_dt_s_));
+    if (smoother_.pending() > params_.smoothing_lag_scans) emit_oldest();
+  }
+
+  // The oldest held-back scan, smoothed (multipath::counted_when_smoothed).
+  void emit_oldest() {
+    const auto& slot = smoother_.oldest();
+    Estimate& e = open_estimate(slot.time_us, slot.scan_index);
+    const multipath::LagModel<T> model{params_.p_stay_active, params_.p_become_active};
+    for (std::size_t i = 0; i < slot.entries.size(); ++i) {
+      multipath::SmoothedEntry<T> s;
+      if (!smoother_.smooth(i, model, s)) ++counters_.numerical_repairs;
+      const bool counted = multipath::counted_when_smoothed(s, params_.hold_existence);
+      if (!counted && !params_.report_tentative) continue;
+      multipath::add_ground_report(e, s.id, s.x, s.P, s.q, counted, s.measurement_index);
+    }
+    smoother_.pop();
+  }
+
+  void drain_smoother() {
+    while (smoother_.pending() > 0) emit_oldest();
+  }
+
+  Estimate& open_estimate(std::uint64_t time_us, std::uint32_t scan_index) {
+    return multipath::open_estimate(outputs_, time_us, scan_index);  // <= kMaxLag + 1 per step
   }
 
   Params params_{};
@@ -503,6 +486,8 @@ class MultipathMfbpTracker {
   ScanClock clock_;
   std::uint32_t next_id_ = 1;
   bool initialized_ = false;
+  multipath::FixedLagSmoother<T, kMaxTracks, kMaxLag> smoother_;
+  T last_dt_s_ = T(0);  ///< time since the previous scan, 0 at the first [s]
   // Constants of the params (derive_constants) and of the scan (set_scan_noise).
   std::array<T, multipath::kParamPaths> ln_pd1_{}, ln_miss1_{};
   T ln_pd0_ = T(0), ln_miss0_ = T(0), ln_lambda_ = T(0), half_ln_det_ = T(0);
@@ -510,9 +495,7 @@ class MultipathMfbpTracker {
   model::OthrMeas<T> scan_r_var_ = model::OthrMeas<T>::Ones();
   bool has_doppler_ = false;
   // Per-step scratch (members, not stack).
-  StaticVector<std::uint16_t, kMaxMeasurements> valid_;  ///< scan index of each valid detection
-  std::array<bool, kMaxMeasurements> kept_{};
-  std::array<model::OthrMeas<T>, kMaxMeasurements> y_{};  ///< valid detections [km, km/s, rad]
+  multipath::DetectionIntake<T, kMaxMeasurements> in_;
   std::array<std::array<std::int32_t, kMaxPaths>, kMaxTracks> pseudo_{};  ///< BP index of (i, tau), -1 = none
   Bp bp_;
   bool has_bp_ = false;
@@ -523,7 +506,6 @@ class MultipathMfbpTracker {
   std::array<T, kMaxPaths> synth_w_{};
   std::array<model::OthrMeas<T>, kMaxPaths> synth_y_{};
   std::array<std::uint16_t, kMaxMeasurements> cand_{};
-  std::array<std::uint16_t, kMaxMeasurements> by_range_{};
   std::array<bool, kMaxMeasurements> used_{};
 };
 
