@@ -10,6 +10,7 @@
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/measurement.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
+#include "mptrack/multipath/multipath_tracker.h"
 #include "mptrack/phd/phd_filter.h"
 
 #define MPTRACK_SIZEOF(name, ...) extern "C" { alignas(8) char mptrack_sizeof__##name[sizeof(__VA_ARGS__)]; }
@@ -28,6 +29,8 @@ MPTRACK_SIZEOF(CbMemberFilter_float_DefaultCaps, m::CbMemberFilter<float, m::Def
 MPTRACK_SIZEOF(CbMemberFilter_float_SmallBoardCaps, m::CbMemberFilter<float, m::SmallBoardCaps>)
 MPTRACK_SIZEOF(GnnTracker_float_DefaultCaps, m::GnnTracker<float, m::DefaultCaps>)
 MPTRACK_SIZEOF(GnnTracker_float_SmallBoardCaps, m::GnnTracker<float, m::SmallBoardCaps>)
+MPTRACK_SIZEOF(MultipathMfbpTracker_float_DefaultCaps, m::MultipathMfbpTracker<float, m::DefaultCaps>)
+MPTRACK_SIZEOF(MultipathMfbpTracker_float_SmallBoardCaps, m::MultipathMfbpTracker<float, m::SmallBoardCaps>)
 MPTRACK_SIZEOF(FrontEnd_Seed004RadarCaps, fe::FrontEnd<fe::Seed004RadarCaps>)
 MPTRACK_SIZEOF(FrontEnd_LargeRadarCaps, fe::FrontEnd<fe::LargeRadarCaps>)
 MPTRACK_SIZEOF(RadarCubeInt16_Seed004RadarCaps, fe::RadarCubeInt16<fe::Seed004RadarCaps>)
