@@ -20,7 +20,7 @@
 
 using mptrack::Status;
 namespace mp = mptrack::multipath;
-using Smoother = mp::FixedLagSmoother<double, 4, 2>;
+using Smoother = mp::FixedLagSmoother<double, 4, 2, 8>;
 using Entry = mp::LagEntry<double>;
 using Tracker = mptrack::MultipathMfbpTracker<float, mptrack::DefaultCaps>;
 
@@ -48,7 +48,7 @@ TEST_CASE("fixed-lag smoother: a scan with no newer scan is returned as filtered
   Smoother s;
   REQUIRE(s.open_scan(10, 0));
   const Entry e = entry(3, 0.6, 0.5);
-  s.record(e);
+  CHECK(s.record(e));
   mp::SmoothedEntry<double> out;
   REQUIRE(s.smooth(0, kModel, out));
   CHECK(out.q == e.q);
@@ -64,9 +64,9 @@ TEST_CASE("fixed-lag smoother: a one-scan miss between detections is smoothed to
   // g0 = 0.58 (0.15 up + 0.85 down) = 0.20927; g1 / (g1 + g0) = 0.79024.
   Smoother s;
   REQUIRE(s.open_scan(10, 0));
-  s.record(entry(1, 0.42, 0.9));
+  CHECK(s.record(entry(1, 0.42, 0.9)));
   REQUIRE(s.open_scan(20, 1));
-  s.record(entry(1, 0.98, 0.444));
+  CHECK(s.record(entry(1, 0.98, 0.444)));
   mp::SmoothedEntry<double> out;
   REQUIRE(s.smooth(0, kModel, out));
   CHECK(out.q == doctest::Approx(0.79024).epsilon(1e-4));
@@ -76,10 +76,10 @@ TEST_CASE("fixed-lag smoother: a one-scan miss between detections is smoothed to
 TEST_CASE("fixed-lag smoother: a newer scan that only confirms its prediction leaves q unchanged") {
   Smoother s;
   REQUIRE(s.open_scan(10, 0));
-  s.record(entry(1, 0.3, 0.5));
+  CHECK(s.record(entry(1, 0.3, 0.5)));
   REQUIRE(s.open_scan(20, 1));
   const double predicted = 0.85 * 0.3 + 0.15 * 0.7;
-  s.record(entry(1, predicted, predicted));  // the update added nothing
+  CHECK(s.record(entry(1, predicted, predicted)));  // the update added nothing
   mp::SmoothedEntry<double> out;
   REQUIRE(s.smooth(0, kModel, out));
   CHECK(out.q == doctest::Approx(0.3).epsilon(1e-12));
@@ -99,9 +99,9 @@ TEST_CASE("fixed-lag smoother: the state step matches RTS computed with an expli
   e1.x = e1.x_pred + Eigen::Vector4d(0.5, 0.001, 1e-4, 0.0);  // after its update
   e1.P = e1.P_pred * 0.5;
   REQUIRE(s.open_scan(10, 0));
-  s.record(e0);
+  CHECK(s.record(e0));
   REQUIRE(s.open_scan(26, 1));
-  s.record(e1);
+  CHECK(s.record(e1));
   mp::SmoothedEntry<double> out;
   REQUIRE(s.smooth(0, kModel, out));
   const mp::Mat4<double> G = e0.P * F.transpose() * e1.P_pred.inverse();
@@ -116,9 +116,9 @@ TEST_CASE("fixed-lag smoother: the state step matches RTS computed with an expli
 TEST_CASE("fixed-lag smoother: a track missing from the next scan (deleted) keeps its filtered values") {
   Smoother s;
   REQUIRE(s.open_scan(10, 0));
-  s.record(entry(1, 0.6, 0.5));
+  CHECK(s.record(entry(1, 0.6, 0.5)));
   REQUIRE(s.open_scan(20, 1));
-  s.record(entry(2, 0.99, 0.5));  // another track only
+  CHECK(s.record(entry(2, 0.99, 0.5)));  // another track only
   mp::SmoothedEntry<double> out;
   REQUIRE(s.smooth(0, kModel, out));
   CHECK(out.q == 0.6);
@@ -234,4 +234,100 @@ TEST_CASE("multipath: validate() names smoothing_lag_scans above Caps::kMaxSmoot
   mptrack::ParamError where;
   CHECK(Tracker::validate(p, &where) == Status::kInvalidArgument);
   CHECK(std::string(where.field) == "smoothing_lag_scans");
+}
+
+TEST_CASE("retrodiction: the backward CWNA step undoes the forward one in the mean, adds Q in the covariance") {
+  mp::Mat4<double> P = mp::Mat4<double>::Identity() * 0.5;
+  Eigen::Vector4d x(1700.0, 0.1, 0.48, 8.7e-5);
+  Eigen::Vector4d fwd = x;
+  mp::Mat4<double> Pf = P;
+  mptrack::model::cwna_predict(fwd, Pf, 16.0, 1e-8, 1e-12);
+  mp::Mat4<double> Pb = P;
+  mp::cwna_retrodict(fwd, Pb, 16.0, 1e-8, 1e-12);
+  for (int r = 0; r < 4; ++r) CHECK(fwd(r) == doctest::Approx(x(r)).epsilon(1e-12));
+  // Independently: F^-1 (P + Q) F^-T with Q = Pf - F P F^T and F^-1 by Eigen.
+  mp::Mat4<double> F = mp::Mat4<double>::Identity();
+  F(0, 1) = F(2, 3) = 16.0;
+  const mp::Mat4<double> Q = Pf - F * P * F.transpose();
+  const mp::Mat4<double> expect = F.inverse() * (P + Q) * F.inverse().transpose();
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) CHECK(Pb(r, c) == doctest::Approx(expect(r, c)).epsilon(1e-9).scale(1e-12));
+  }
+}
+
+namespace {
+
+/// One target seen on path 0 only for scans 0-2 (no birth: a group needs
+/// two detections), then on all four paths; no clutter.
+std::vector<Tracker::ScanType> late_birth_scans(othr_scene::Scene& four) {
+  four.targets = othr_scene::seed002_targets();
+  four.targets.resize(1);
+  four.pd = 0.999;
+  four.clutter_mean = 0.0;
+  othr_scene::Scene one = four;
+  one.geometry.num_paths = 1;
+  auto a = othr_scene::make_scans<Tracker::kMaxMeasurements>(one, 8);
+  auto b = othr_scene::make_scans<Tracker::kMaxMeasurements>(four, 8);
+  for (std::size_t k = 0; k < 3; ++k) b[k] = a[k];
+  return b;
+}
+
+/// Scans with a counted report (one target, no clutter: it is the
+/// target's track), its largest ground error over them [km], and the first
+/// step after which the tracker holds a confirmed track.
+struct Coverage {
+  std::vector<std::uint32_t> scans;
+  double worst_error_km = 0.0;
+  std::uint32_t confirmed_at = 99;
+};
+
+Coverage covered_scans(bool retrodict) {
+  othr_scene::Scene scene;
+  const auto scans = late_birth_scans(scene);
+  Tracker::Params p;
+  p.pd.fill(0.999f - 1e-3f);
+  p.smoothing_lag_scans = 3;
+  p.retrodict_births = retrodict;
+  auto trk = std::make_unique<Tracker>();
+  REQUIRE(trk->init(p) == Status::kOk);
+  Coverage cov;
+  const auto take = [&](const Tracker::OutputQueue& out) {
+    for (const auto& e : out) {
+      for (const auto& r : e.tracks) {
+        if (!r.confirmed) continue;
+        cov.scans.push_back(e.scan_index);
+        const double err = ground_error_km(r, scene.targets[0].at(static_cast<int>(e.scan_index), scene.dt_s));
+        cov.worst_error_km = err > cov.worst_error_km ? err : cov.worst_error_km;
+      }
+    }
+  };
+  for (std::uint32_t k = 0; k < scans.size(); ++k) {
+    REQUIRE(trk->step(scans[k]) == Status::kOk);
+    for (const auto& t : trk->tracks()) cov.confirmed_at = t.confirmed && cov.confirmed_at == 99 ? k : cov.confirmed_at;
+    take(trk->outputs());
+  }
+  REQUIRE(trk->flush() == Status::kOk);
+  take(trk->outputs());
+  return cov;
+}
+
+}  // namespace
+
+TEST_CASE("retrodiction: a track born at scan 3 is reported back to 3 scans before its confirmation") {
+  // Scan s is output at step s + 3, counted if the track is confirmed by
+  // then: with retrodiction every scan from max(0, c - 3) on, c the step
+  // of confirmation; without, only from the birth scan 3.
+  CHECK(covered_scans(false).scans == std::vector<std::uint32_t>{3, 4, 5, 6, 7});
+  const Coverage retro = covered_scans(true);
+  REQUIRE(retro.confirmed_at >= 3);
+  REQUIRE(retro.confirmed_at <= 6);
+  std::vector<std::uint32_t> expect;
+  for (std::uint32_t k = retro.confirmed_at - 3; k < 8; ++k) expect.push_back(k);
+  CHECK(retro.scans == expect);
+}
+
+TEST_CASE("retrodiction: the carried-back states stay within 3 azimuth sigmas (15 km) of the target") {
+  // Each held-back scan adds one path-0 detection, azimuth sigma 3e-3 rad:
+  // about 5.1 km across range at 1700 km.
+  CHECK(covered_scans(true).worst_error_km < 15.0);
 }

@@ -27,6 +27,7 @@
 #include "mptrack/model/othr_measurement.h"
 #include "mptrack/multipath/path_track.h"
 #include "mptrack/static_vector.h"
+#include "mptrack/status.h"
 
 namespace mptrack::multipath {
 
@@ -43,6 +44,17 @@ struct LagEntry {
   T dt_s = T(0);     ///< time from the previous scan [s]
   bool confirmed = false;               ///< reached the counting threshold at or before this scan
   std::int32_t measurement_index = -1;  ///< scan index of its most likely detection
+  /// Retrodicted (multipath/retrodiction.h): a track born later, carried
+  /// back; its state is taken as it is (no RTS or chain step through it).
+  bool retro = false;
+};
+
+/// A detection of a held-back scan that no track took and no birth used.
+template <class T>
+struct Leftover {
+  model::OthrMeas<T> y = model::OthrMeas<T>::Zero();  ///< [km, km/s, rad]
+  std::uint16_t scan_index = 0;  ///< its index in the scan
+  bool taken = false;            ///< claimed by a retrodicted track
 };
 
 /// The smoothed view of one entry of the oldest scan.
@@ -64,7 +76,7 @@ struct LagModel {
   T p_become = T(0.15);    ///< p(s = 1 | s = 0)
 };
 
-template <class T, std::size_t MaxTracks, std::size_t MaxLag>
+template <class T, std::size_t MaxTracks, std::size_t MaxLag, std::size_t MaxMeasurements = 1>
 class FixedLagSmoother {
   static_assert(MaxLag >= 1, "a fixed-lag smoother needs a lag of at least one scan");
 
@@ -73,6 +85,9 @@ class FixedLagSmoother {
     std::uint64_t time_us = 0;
     std::uint32_t scan_index = 0;
     StaticVector<LagEntry<T>, MaxTracks> entries;
+    StaticVector<Leftover<T>, MaxMeasurements> leftovers;  ///< for retrodiction, in slant-range order
+    model::OthrMeas<T> r_var = model::OthrMeas<T>::Ones();  ///< the scan's noise variances [km^2, (km/s)^2, rad^2]
+    bool has_doppler = false;
   };
 
   /// Forgets every scan.
@@ -86,14 +101,23 @@ class FixedLagSmoother {
     s.time_us = time_us;
     s.scan_index = scan_index;
     s.entries.clear();
+    s.leftovers.clear();
     ++count_;
     return true;
   }
-  /// Records a track at the newest scan (at most MaxTracks per scan).
-  void record(const LagEntry<T>& e) { static_cast<void>(slot(count_ - 1).entries.push_back(e)); }
+  /// Records a track at the newest scan; false if the scan holds MaxTracks.
+  bool record(const LagEntry<T>& e) { return newest().entries.push_back(e) == Status::kOk; }
+
+  /// Records at the pending scan of the given age; false if it holds MaxTracks.
+  bool record_at(std::size_t age, const LagEntry<T>& e) { return slot(age).entries.push_back(e) == Status::kOk; }
 
   /// The oldest pending scan (pending() > 0).
   const Slot& oldest() const { return slot(0); }
+  /// The newest pending scan (pending() > 0).
+  Slot& newest() { return slot(count_ - 1); }
+  /// Pending scan by age: 0 the oldest, pending() - 1 the newest.
+  Slot& slot(std::size_t age) { return ring_[(head_ + age) % kSlots]; }
+  const Slot& slot(std::size_t age) const { return ring_[(head_ + age) % kSlots]; }
 
   /// Smooths entry i of the oldest scan with every newer scan. Returns
   /// false when an innovation covariance was not SPD (the filtered state
@@ -118,6 +142,12 @@ class FixedLagSmoother {
     for (std::size_t k = n - 1; k-- > 0;) {
       const LagEntry<T>& cur = *chain[k];
       const LagEntry<T>& nxt = *chain[k + 1];
+      if (cur.retro || nxt.retro) {  // not filtered forward: no backward step through it
+        xs = cur.x;
+        Ps = cur.P;
+        gamma = cur.q;
+        continue;
+      }
       gamma = smooth_existence(cur.q, nxt.q_pred, gamma, m);
       if (ok) ok = rts_step(cur, nxt, xs, Ps);
       if (!ok) {
@@ -142,9 +172,6 @@ class FixedLagSmoother {
 
  private:
   static constexpr std::size_t kSlots = MaxLag + 1;
-
-  Slot& slot(std::size_t age) { return ring_[(head_ + age) % kSlots]; }
-  const Slot& slot(std::size_t age) const { return ring_[(head_ + age) % kSlots]; }
 
   static const LagEntry<T>* find(const Slot& s, std::uint32_t id) {
     for (const LagEntry<T>& e : s.entries) {

@@ -97,6 +97,9 @@ struct MultipathParams {
   /// estimate at once; at most Caps::kMaxSmoothingLag; docs/algorithms/
   /// multipath.md §Fixed-lag smoother) [scans].
   std::uint32_t smoothing_lag_scans = 0;
+  /// With a lag: carry a new track back through the held-back scans'
+  /// leftover detections (docs/algorithms/multipath.md §Retrodiction).
+  bool retrodict_births = true;
   T max_gap_s = T(120);           ///< a longer gap drops every track (scan_clock.h) [s]
   T min_variance = T(1e-14);      ///< diagonal floor of the last-resort covariance repair [-]
 

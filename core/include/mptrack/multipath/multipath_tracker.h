@@ -54,6 +54,7 @@
 #include "mptrack/multipath/multipath_params.h"
 #include "mptrack/multipath/path_fusion.h"
 #include "mptrack/multipath/path_track.h"
+#include "mptrack/multipath/retrodiction.h"
 #include "mptrack/multipath/track_output.h"
 #include "mptrack/scan_clock.h"
 #include "mptrack/static_vector.h"
@@ -128,6 +129,7 @@ class MultipathMfbpTracker {
     model::MeasurementValidator<T> check = params_.region.validator();
     check.doppler_span_mps = params_.range_rate_span_mps;
     const std::size_t rejected = in_.select(scan, check, counters_);
+    scan_time_us_ = scan.time_us;
     set_scan_noise(scan.has_doppler);
     predict(clock_.has_time() ? clock_.elapsed_s(scan.time_us, T(0)) : T(0));
     for (std::uint32_t r = 0; r < params_.vb_iterations; ++r) {
@@ -384,11 +386,11 @@ class MultipathMfbpTracker {
       used_[j] = false;
       if (clutter >= params_.birth_clutter_belief) cand_[n++] = static_cast<std::uint16_t>(j);
     }
+    cand_n_ = n;
     const std::size_t max_members = params_.num_paths < multipath::kMaxGroup ? params_.num_paths : multipath::kMaxGroup;
     for (std::size_t a = 0; a < n; ++a) {
       const std::size_t ja = cand_[a];
-      if (used_[ja]) continue;
-      used_[ja] = true;
+      if (used_[ja]) continue;  // a member of an earlier group's birth (only a later anchor is tested)
       std::array<std::uint16_t, multipath::kMaxGroup> members{};
       std::size_t m = 0;
       members[m++] = static_cast<std::uint16_t>(ja);
@@ -437,6 +439,7 @@ class MultipathMfbpTracker {
     static_cast<void>(tracks_.push_back(multipath::new_track<T, kMaxPaths>(
         h, m, params_, scan_r_var_, has_doppler_, next_id_++, static_cast<std::int32_t>(scan_index))));
     ++counters_.tracks_born;
+    if (params_.smoothing_lag_scans > 0 && params_.retrodict_births) retrodict(tracks_[tracks_.size() - 1]);
     return true;
   }
 
@@ -449,10 +452,37 @@ class MultipathMfbpTracker {
     }
   }
 
-  // Step 6, fixed lag: record this scan, report the one smoothing_lag_scans back.
+  // A new track carried back through the held-back scans.
+  void retrodict(const Track& t) {
+    multipath::RetroModel<T> m;
+    m.paths = params_.paths.data();
+    m.num_paths = params_.num_paths;
+    m.baseline_km = params_.baseline_km;
+    m.ln_pd1 = ln_pd1_.data();
+    m.ln_miss1 = ln_miss1_.data();
+    m.ln_lambda = ln_lambda_;
+    m.gate_chi2 = params_.gate_chi2;
+    m.q_range = params_.range_psd_m2ps3 * T(1e-6);  // km^2/s^3
+    m.q_bearing = params_.bearing_psd_rad2ps3;
+    std::size_t refused = 0;
+    static_cast<void>(multipath::retrodict(smoother_, t, scan_time_us_, m, refused));
+    counters_.track_cap_hits += refused;
+  }
+
+  // Step 6, fixed lag: record this scan (tracks and the detections left
+  // over for retrodiction), report the one smoothing_lag_scans back.
   void report_lagged(const ScanType& scan) {
     static_cast<void>(smoother_.open_scan(scan.time_us, static_cast<std::uint32_t>(counters_.scans)));  // popped below
-    for (const Track& t : tracks_) smoother_.record(multipath::lag_entry(t, last_dt_s_));
+    auto& slot = smoother_.newest();
+    slot.r_var = scan_r_var_;
+    slot.has_doppler = has_doppler_;
+    for (std::size_t a = 0; a < cand_n_; ++a) {
+      const std::size_t j = cand_[a];
+      if (!used_[j]) static_cast<void>(slot.leftovers.push_back({in_.y[j], in_.valid[j], false}));  // <= scan size
+    }
+    for (const Track& t : tracks_) {
+      if (!smoother_.record(multipath::lag_entry(t, last_dt_s_))) ++counters_.track_cap_hits;
+    }
     if (smoother_.pending() > params_.smoothing_lag_scans) emit_oldest();
   }
 
@@ -486,7 +516,8 @@ class MultipathMfbpTracker {
   ScanClock clock_;
   std::uint32_t next_id_ = 1;
   bool initialized_ = false;
-  multipath::FixedLagSmoother<T, kMaxTracks, kMaxLag> smoother_;
+  multipath::FixedLagSmoother<T, kMaxTracks, kMaxLag, kMaxMeasurements> smoother_;
+  std::uint64_t scan_time_us_ = 0;  ///< of the scan being processed
   T last_dt_s_ = T(0);  ///< time since the previous scan, 0 at the first [s]
   // Constants of the params (derive_constants) and of the scan (set_scan_noise).
   std::array<T, multipath::kParamPaths> ln_pd1_{}, ln_miss1_{};
@@ -505,7 +536,8 @@ class MultipathMfbpTracker {
   std::size_t gate_n_ = 0;
   std::array<T, kMaxPaths> synth_w_{};
   std::array<model::OthrMeas<T>, kMaxPaths> synth_y_{};
-  std::array<std::uint16_t, kMaxMeasurements> cand_{};
+  std::array<std::uint16_t, kMaxMeasurements> cand_{};  ///< birth candidates in slant-range order
+  std::size_t cand_n_ = 0;
   std::array<bool, kMaxMeasurements> used_{};
 };
 
