@@ -230,3 +230,30 @@ TEST_CASE("mptf: validate() names the failing field") {
   q.delete_misses = 0;
   expect(q, "delete_misses");
 }
+
+TEST_CASE("mptf: with fuse_defer_ambiguous, EF and FF alone (a ghost reading as EE and FE fits as well) start nothing") {
+  const mptrack::model::OthrPath<double> kEF{100.0, 260.0};
+  // The ghost: the EF detection read as EE and the FF detection read as FE
+  // land within a few km of each other on the ground, as the true reading does.
+  mptrack::model::OthrState<double> a, b;
+  REQUIRE(mptrack::model::othr_invert(mptrack::model::othr_measure(truth(0), kEF, 100.0), kEE, 100.0, a));
+  REQUIRE(mptrack::model::othr_invert(mptrack::model::othr_measure(truth(0), kFF, 100.0), {260.0, 100.0}, 100.0, b));
+  REQUIRE(std::fabs(a(0) - b(0)) < 2.0);
+  REQUIRE(std::fabs(a(2) - b(2)) < 1e-3);
+  for (bool defer : {false, true}) {
+    CAPTURE(defer);
+    auto t = std::make_unique<Tracker>();
+    Tracker::Params p;  // the four seed 002 paths
+    p.fuse_defer_ambiguous = defer;
+    REQUIRE(t->init(p) == Status::kOk);
+    for (int k = 0; k < 6; ++k) REQUIRE(t->step(scan_at(k, {kEF, kFF})) == Status::kOk);
+    CHECK(t->fused_tracks().size() == (defer ? 0u : 1u));
+    // EE joins (confirmed 3 scans later): the true reading now has 3 paths.
+    for (int k = 6; k < 9; ++k) REQUIRE(t->step(scan_at(k, {kEE, kEF, kFF})) == Status::kOk);
+    if (defer) {
+      REQUIRE(t->fused_tracks().size() == 1);
+      CHECK(t->fused_tracks()[0].members() == 3);
+      CHECK(std::fabs(static_cast<double>(t->fused_tracks()[0].x(0)) - truth(8)(0)) < 2.0);
+    }
+  }
+}

@@ -22,9 +22,10 @@ class FusionTable {
 
   struct Config {
     std::size_t num_paths = 1;
-    T gate_chi2 = T(9.21);
+    T gate_chi2 = T(11.34);
     std::uint32_t min_paths = 2;
     T min_variance = T(1e-14);
+    bool defer_ambiguous = false;
   };
 
   void clear() { fused_.clear(); }
@@ -161,6 +162,24 @@ class FusionTable {
     return count;
   }
 
+  // True if pick b reads a path track of pick a under another path (the
+  // same detections, another ground point: a ghost of one of them).
+  static bool conflicting(const std::array<std::size_t, MaxPaths>& a, const std::array<std::size_t, MaxPaths>& b,
+                          std::size_t num_paths) {
+    for (std::size_t p = 0; p < num_paths; ++p) {
+      if (a[p] == kNone) continue;
+      for (std::size_t q = 0; q < num_paths; ++q) {
+        if (q != p && b[q] == a[p]) return true;
+      }
+    }
+    return false;
+  }
+
+  // Step 3 once: the best-supported seed starts a fused track. With
+  // defer_ambiguous, not if a seed with as much support reads one of its
+  // path tracks under another path (those tracks wait for a scan where
+  // more paths are confirmed; docs/algorithms/mptf.md §Fusion). False when
+  // no seed is left.
   bool start_new(Cand* cand, std::size_t n, const Config& cfg, TrackerCounters& c, std::uint32_t& next_id) {
     std::uint32_t best_count = 0;
     T best_total = T(0);
@@ -180,9 +199,22 @@ class FusionTable {
       }
     }
     if (best_count < cfg.min_paths) return false;
-    if (fused_.size() == MaxFused) {
-      ++c.track_cap_hits;
-      return false;
+    bool ambiguous = false;
+    for (std::size_t k = 0; k < n && cfg.defer_ambiguous && !ambiguous; ++k) {
+      if (cand[k].used) continue;
+      for (std::size_t p = 0; p < cfg.num_paths && !ambiguous; ++p) {
+        if (!cand[k].ok[p]) continue;
+        T total = T(0);
+        const std::uint32_t count = support(cand, n, k, p, cfg, pick, total);
+        ambiguous = count == best_count && conflicting(best_pick, pick, cfg.num_paths);
+      }
+    }
+    if (ambiguous || fused_.size() == MaxFused) {
+      if (!ambiguous) ++c.track_cap_hits;
+      for (std::size_t p = 0; p < cfg.num_paths; ++p) {
+        if (best_pick[p] != kNone) cand[best_pick[p]].used = true;  // out of this scan's search
+      }
+      return true;
     }
     Fused f;
     f.id = next_id++;

@@ -10,9 +10,10 @@
 //      are closest to, within the gate, closest pairs first;
 //   3. new: among free candidates, the (track, path) seed whom the most other
 //      tracks support on distinct paths within the gate starts a fused track
-//      with them, if they are at least fuse_min_paths; repeated until none.
-// Distances are Mahalanobis in ground position (g, theta) over the sum of
-// the two covariances.
+//      with them, if they are at least fuse_min_paths; repeated until none
+//      (optionally deferred while another path reading is as well supported).
+// Distances are Mahalanobis in ground range, range rate and bearing
+// (g, g_dot, theta) over the sum of the two covariances.
 #pragma once
 
 #include <array>
@@ -57,15 +58,22 @@ struct FusedTrack {
   }
 };
 
-/// Mahalanobis distance^2 of two ground states in position (g, theta) over
-/// Pa + Pb; a huge value when that covariance is not usable.
+/// Mahalanobis distance^2 of two ground states in (g, g_dot, theta) over
+/// Pa + Pb; a huge value when that covariance is not SPD. The ground range
+/// rate comes from the measured slant range rate (1 m/s noise against a
+/// +-524 m/s clutter spread), so it separates chance coincidences of
+/// clutter tracks that position alone would fuse (docs/algorithms/mptf.md §Fusion).
 template <class T>
 T ground_distance2(const model::OthrState<T>& a, const Mat4<T>& Pa, const model::OthrState<T>& b, const Mat4<T>& Pb) {
-  Eigen::Matrix<T, 2, 2> C;
-  C << Pa(0, 0) + Pb(0, 0), Pa(0, 2) + Pb(0, 2), Pa(2, 0) + Pb(2, 0), Pa(2, 2) + Pb(2, 2);
-  const Eigen::Matrix<T, 2, 1> e(a(0) - b(0), a(2) - b(2));
+  constexpr int kAxis[3] = {0, 1, 2};  // g, g_dot, theta
+  Mat3<T> C;
+  Eigen::Matrix<T, 3, 1> e;
+  for (int r = 0; r < 3; ++r) {
+    e(r) = a(kAxis[r]) - b(kAxis[r]);
+    for (int c = 0; c < 3; ++c) C(r, c) = Pa(kAxis[r], kAxis[c]) + Pb(kAxis[r], kAxis[c]);
+  }
   T d2 = T(1e30);
-  static_cast<void>(model::mahalanobis2(e, C, d2));
+  static_cast<void>(model::mahalanobis_n<T, 3>(e, C, d2));
   return d2;
 }
 

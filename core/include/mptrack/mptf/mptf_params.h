@@ -52,8 +52,12 @@ struct MptfParams {
   std::uint32_t delete_misses = 3;  ///< confirmed track deleted after this many scans with an empty gate
 
   // --- fusion in ground coordinates ---
-  T fusion_gate_chi2 = T(9.21);    ///< 2-dof gate on the ground (g, theta) distance (99 %) [-]
+  T fusion_gate_chi2 = T(11.34);   ///< 3-dof gate on the ground (g, g_dot, theta) distance (99 %) [-]
   std::uint32_t fuse_min_paths = 2;  ///< path tracks a new fused track needs, in [1, num_paths]
+  /// Do not start a fused track while another reading of its path tracks
+  /// (other paths) has as much support: fewer ghosts, later tracks
+  /// (docs/algorithms/mptf.md §Fusion).
+  bool fuse_defer_ambiguous = false;
 
   // --- gaps, numerics ---
   T max_gap_s = T(120);       ///< a longer gap drops every track (scan_clock.h) [s]

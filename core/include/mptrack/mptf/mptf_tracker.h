@@ -165,6 +165,7 @@ class MptfTracker {
     cfg_.gate_chi2 = params_.fusion_gate_chi2;
     cfg_.min_paths = params_.fuse_min_paths;
     cfg_.min_variance = params_.min_variance;
+    cfg_.defer_ambiguous = params_.fuse_defer_ambiguous;
   }
 
   // Without Doppler the range-rate row is uninformative: residual 0 and
