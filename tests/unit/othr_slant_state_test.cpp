@@ -37,11 +37,13 @@ TEST_CASE("othr slant state: ground -> slant -> ground returns the state on ever
   }
 }
 
-TEST_CASE("othr slant state: the slant range and azimuth are the measurement function's (EE reference values)") {
+TEST_CASE("othr slant state: slant range, rate and azimuth of target 1 on EE match hand values") {
   OthrSlantState<double> s;
   OthrMat4<double> J;
   othr_ground_to_slant(target1(), kPaths[0], 100.0, s, J);
-  // The reference table of docs/algorithms/multipath.md §OTHR geometry.
+  // By hand from seed 002 eq. (57): r_a = sqrt(1700^2/4 + 100^2) = 855.862,
+  // r_b = sqrt((1700^2 - 2 100 1700 sin 0.48 + 100^2)/4 + 100^2) = 834.116;
+  // zeta = asin(1700 sin 0.48 / (2 r_a)) = asin(0.458616) = 0.476437.
   CHECK(s(0) == doctest::Approx(1689.978).epsilon(1e-6));
   CHECK(s(1) == doctest::Approx(0.099226).epsilon(1e-5));
   CHECK(s(2) == doctest::Approx(0.476437).epsilon(1e-6));

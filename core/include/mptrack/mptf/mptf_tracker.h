@@ -9,7 +9,7 @@
 // we run the slant tracker once and register each confirmed track under
 // every path (docs/algorithms/mptf.md §Departures from the paper). Per step():
 //   1. intake: valid detections (region, range-rate span, NaN), km units,
-//      sorted by slant range;
+//      sorted by slant range (model/othr_detections.h);
 //   2. predict every path track (CV in r and in zeta, model/cwna_motion.h);
 //   3. gate (p_g from gate_chi2) and PDA-update each track (pda_update.h);
 //   4. M/N logic: confirm, or delete (slant_track.h);
@@ -21,7 +21,6 @@
 // tracker in static storage.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -35,8 +34,8 @@
 #include "mptrack/math/erf.h"
 #include "mptrack/measurement.h"
 #include "mptrack/model/cwna_motion.h"
-#include "mptrack/model/measurement_validator.h"
 #include "mptrack/model/othr_cartesian.h"
+#include "mptrack/model/othr_detections.h"
 #include "mptrack/model/othr_slant_state.h"
 #include "mptrack/model/spd_guard_scaled.h"
 #include "mptrack/mptf/fusion_table.h"
@@ -113,10 +112,10 @@ class MptfTracker {
       tracks_.clear();
       fusion_.clear();
     }
-    const std::size_t rejected = select_valid(scan);
+    const std::size_t rejected = det_.select(scan, params_.region, params_.range_rate_span_mps, counters_);
     set_scan_noise(scan.has_doppler);
     const T dt = clock_.has_time() ? clock_.elapsed_s(scan.time_us, T(0)) : T(0);
-    for (std::size_t j = 0; j < valid_.size(); ++j) in_gate_[j] = false;
+    for (std::size_t j = 0; j < det_.size(); ++j) in_gate_[j] = false;
     for (PathTrack& t : tracks_) {
       predict(t, dt);
       associate(t);
@@ -180,60 +179,6 @@ class MptfTracker {
     }
   }
 
-  // Step 1.
-  std::size_t select_valid(const ScanType& scan) {
-    valid_.clear();
-    std::size_t invalid = 0;
-    std::size_t duplicate = 0;
-    counters_.measurements_in += scan.measurements.size();
-    model::MeasurementValidator<T> check = params_.region.validator();
-    check.check_doppler = scan.has_doppler;
-    check.doppler_span_mps = params_.range_rate_span_mps;
-    for (std::size_t j = 0; j < scan.measurements.size(); ++j) {
-      const Measurement<T>& m = scan.measurements[j];
-      kept_[j] = false;
-      if (!check.valid(m)) {
-        ++invalid;
-      } else if (is_duplicate(scan, j, [this](std::size_t i) { return kept_[i]; })) {
-        ++duplicate;
-      } else {
-        kept_[j] = true;
-        const std::size_t k = valid_.size();
-        y_[k] << m.range_m * T(1e-3), scan.has_doppler ? m.doppler_mps * T(1e-3) : T(0), m.azimuth_rad;
-        static_cast<void>(valid_.push_back(static_cast<std::uint16_t>(j)));  // scan capacity
-      }
-    }
-    counters_.measurements_invalid += invalid;
-    counters_.measurements_duplicate += duplicate;
-    sort_by_range();
-    return invalid + duplicate;
-  }
-
-  // by_range_: valid detections in increasing slant range (index breaks ties).
-  void sort_by_range() {
-    const std::size_t n = valid_.size();
-    for (std::size_t j = 0; j < n; ++j) by_range_[j] = static_cast<std::uint16_t>(j);
-    std::sort(by_range_.begin(), by_range_.begin() + static_cast<std::ptrdiff_t>(n),
-              [this](std::uint16_t a, std::uint16_t b) {
-                return y_[a](0) < y_[b](0) || (!(y_[b](0) < y_[a](0)) && a < b);
-              });
-  }
-
-  // First position in by_range_ whose slant range is >= r_km (binary search).
-  std::size_t first_at_or_above(T r_km) const {
-    std::size_t lo = 0;
-    std::size_t hi = valid_.size();
-    while (lo < hi) {
-      const std::size_t mid = lo + (hi - lo) / 2;
-      if (y_[by_range_[mid]](0) < r_km) {
-        lo = mid + 1;
-      } else {
-        hi = mid;
-      }
-    }
-    return lo;
-  }
-
   // Step 2.
   void predict(PathTrack& t, T dt_s) {
     ++t.age_scans;
@@ -252,10 +197,10 @@ class MptfTracker {
     }
     const T half = std::sqrt(params_.gate_chi2) * g.L(0, 0);
     std::size_t n = 0;
-    for (std::size_t q = first_at_or_above(t.s(0) - half); q < valid_.size(); ++q) {
-      const std::size_t j = by_range_[q];
-      if (y_[j](0) > t.s(0) + half) break;
-      model::OthrMeas<T> v = y_[j] - t.s.template head<3>();
+    for (std::size_t q = det_.first_at_or_above(t.s(0) - half); q < det_.size(); ++q) {
+      const std::size_t j = det_.by_range(q);
+      if (det_.y(j)(0) > t.s(0) + half) break;
+      model::OthrMeas<T> v = det_.y(j) - t.s.template head<3>();
       if (!has_doppler_) v(1) = T(0);
       const T d2 = mptf::gate_distance2(g, v);
       if (!(d2 <= params_.gate_chi2)) continue;
@@ -267,7 +212,7 @@ class MptfTracker {
     }
     t.hit = n > 0;
     const int best = mptf::pda_update(t, g, gate_v_.data(), gate_d2_.data(), n, ln_pd_lambda_, miss_, beta_.data());
-    if (best >= 0) t.measurement_index = static_cast<std::int32_t>(valid_[gate_j_[static_cast<std::size_t>(best)]]);
+    if (best >= 0) t.measurement_index = static_cast<std::int32_t>(det_.scan_index(gate_j_[static_cast<std::size_t>(best)]));
     if (model::keep_spd_scaled(t.P, params_.min_variance)) ++counters_.numerical_repairs;
   }
 
@@ -294,8 +239,8 @@ class MptfTracker {
 
   // Step 5: a tentative track at every detection no track gated, in slant-range order.
   void births() {
-    for (std::size_t q = 0; q < valid_.size(); ++q) {
-      const std::size_t j = by_range_[q];
+    for (std::size_t q = 0; q < det_.size(); ++q) {
+      const std::size_t j = det_.by_range(q);
       if (in_gate_[j]) continue;
       if (tracks_.size() == kMaxPathTracks) {
         ++counters_.track_cap_hits;
@@ -303,7 +248,7 @@ class MptfTracker {
       }
       PathTrack t;
       t.id = next_track_id_++;
-      t.s << y_[j](0), y_[j](1), y_[j](2), T(0);
+      t.s << det_.y(j)(0), det_.y(j)(1), det_.y(j)(2), T(0);
       t.P.setZero();
       t.P(0, 0) = scan_r_var_(0);
       t.P(1, 1) = scan_r_var_(1);
@@ -311,7 +256,7 @@ class MptfTracker {
       t.P(3, 3) = params_.init_azimuth_rate_std_radps * params_.init_azimuth_rate_std_radps;
       t.stage_hits = 1;  // the birth detection
       t.hit = true;
-      t.measurement_index = static_cast<std::int32_t>(valid_[j]);
+      t.measurement_index = static_cast<std::int32_t>(det_.scan_index(j));
       static_cast<void>(tracks_.push_back(t));  // size checked above
       ++counters_.tracks_born;
     }
@@ -371,11 +316,8 @@ class MptfTracker {
   model::OthrMeas<T> scan_r_var_ = model::OthrMeas<T>::Ones();
   bool has_doppler_ = false;
   // Per-step scratch (members, not stack).
-  StaticVector<std::uint16_t, kMaxMeasurements> valid_;  ///< scan index of each valid detection
-  std::array<bool, kMaxMeasurements> kept_{};
+  model::OthrDetections<T, kMaxMeasurements> det_;  ///< this scan's valid detections
   std::array<bool, kMaxMeasurements> in_gate_{};
-  std::array<model::OthrMeas<T>, kMaxMeasurements> y_{};  ///< valid detections [km, km/s, rad]
-  std::array<std::uint16_t, kMaxMeasurements> by_range_{};
   std::array<model::OthrMeas<T>, kMaxMeasurements> gate_v_{};
   std::array<T, kMaxMeasurements> gate_d2_{};
   std::array<T, kMaxMeasurements> beta_{};
