@@ -60,6 +60,15 @@ Tracker::Params one_path() {
   return p;
 }
 
+/// Two paths (EE, FF); a new fused track needs both.
+Tracker::Params two_paths() {
+  Tracker::Params p;
+  p.num_paths = 2;
+  p.paths[0] = {100.0f, 100.0f};
+  p.paths[1] = {260.0f, 260.0f};
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("mptf: with stage 2 off, a path track is confirmed on 2/2 at its second scan") {
@@ -125,10 +134,7 @@ TEST_CASE("mptf: a confirmed track is deleted after delete_misses scans with an 
 
 TEST_CASE("mptf: the EE and FF path tracks of one target fuse into one ground track at the target") {
   auto t = std::make_unique<Tracker>();
-  Tracker::Params p;
-  p.num_paths = 2;
-  p.paths[0] = {100.0f, 100.0f};
-  p.paths[1] = {260.0f, 260.0f};
+  const Tracker::Params p = two_paths();
   REQUIRE(t->init(p) == Status::kOk);
   for (int k = 0; k < 6; ++k) REQUIRE(t->step(scan_at(k, {kEE, kFF})) == Status::kOk);
   REQUIRE(t->path_tracks().size() == 2);
@@ -146,10 +152,7 @@ TEST_CASE("mptf: the EE and FF path tracks of one target fuse into one ground tr
 
 TEST_CASE("mptf: the fused covariance is the information sum, below either member's") {
   auto t = std::make_unique<Tracker>();
-  Tracker::Params p;
-  p.num_paths = 2;
-  p.paths[0] = {100.0f, 100.0f};
-  p.paths[1] = {260.0f, 260.0f};
+  const Tracker::Params p = two_paths();
   REQUIRE(t->init(p) == Status::kOk);
   for (int k = 0; k < 4; ++k) REQUIRE(t->step(scan_at(k, {kEE, kFF})) == Status::kOk);
   REQUIRE(t->fused_tracks().size() == 1);
@@ -165,10 +168,7 @@ TEST_CASE("mptf: the fused covariance is the information sum, below either membe
 
 TEST_CASE("mptf: a fused track keeps its id while its path tracks live") {
   auto t = std::make_unique<Tracker>();
-  Tracker::Params p;
-  p.num_paths = 2;
-  p.paths[0] = {100.0f, 100.0f};
-  p.paths[1] = {260.0f, 260.0f};
+  const Tracker::Params p = two_paths();
   REQUIRE(t->init(p) == Status::kOk);
   std::vector<std::uint32_t> ids;
   for (int k = 0; k < 12; ++k) {
