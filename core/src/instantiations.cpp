@@ -20,6 +20,7 @@
 #include "mptrack/phd/phd_filter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/multipath/multipath_tracker.h"
+#include "mptrack/mptf/mptf_tracker.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
@@ -81,6 +82,11 @@ template class CbMemberFilter<float, DefaultCaps>;
 // Multipath MF-BP (seed 002): float on targets
 template class MultipathMfbpTracker<float, DefaultCaps>;
 template class MultipathMfbpTracker<float, SmallBoardCaps>;
+
+// Multipath track fusion baseline (seed 002): float on targets
+template class MptfTracker<float, DefaultCaps>;
+template class MptfTracker<float, SmallBoardCaps>;
+template struct MptfParams<float>;
 
 // Params structs and their validate() (tracker_params.h blocks)
 template struct GnnParams<float>;

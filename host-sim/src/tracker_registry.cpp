@@ -7,6 +7,7 @@
 #include "trackers/vmp_adapter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/multipath/multipath_tracker.h"
+#include "mptrack/mptf/mptf_tracker.h"
 #include "mptrack/phd/phd_filter.h"
 
 namespace mptrack::sim {
@@ -27,6 +28,7 @@ constexpr Entry kEntries[] = {
     {"mfbp-st", "MF-BP ablation MP-RMTTst: first MP iteration only"},
     {"gnn", "GNN + Kalman baseline"},
     {"mfbp-multipath", "multipath MF-BP (seed 002): BP over (target, path), OTHR scenarios only"},
+    {"mptf", "multipath track fusion baseline (seed 002): slant PDA path tracks fused in ground, OTHR only"},
     {"gmphd", "IGGM GM-PHD with amplitude, clutter map estimated (seed 001)"},
     {"gmphd-uniform", "IGGM GM-PHD, uniform clutter rate and power estimated"},
     {"gmphd-known", "IGGM GM-PHD, uniform clutter of known rate (fixed model)"},
@@ -66,6 +68,8 @@ std::vector<TrackerFootprint> tracker_footprints() {
                  sizeof(MultipathMfbpTracker<double, DefaultCaps>)});
   out.push_back({"CbMemberFilter<T, DefaultCaps>", sizeof(CbMemberFilter<float, DefaultCaps>),
                  sizeof(CbMemberFilter<double, DefaultCaps>)});
+  out.push_back({"MptfTracker<T, DefaultCaps>", sizeof(MptfTracker<float, DefaultCaps>),
+                 sizeof(MptfTracker<double, DefaultCaps>)});
   return out;
 }
 
@@ -74,6 +78,7 @@ std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::strin
     if (name != e.name) continue;
     if (name == "oracle") return make_oracle_tracker();
     if (name == "mfbp-multipath") return make_multipath_tracker();
+    if (name == "mptf") return make_mptf_tracker();
     if (name.rfind("mfbp", 0) == 0) return make_mfbp_tracker(name);
     if (name == "gnn") return make_gnn_tracker();
     if (name == "vmp") return make_vmp_adapter();

@@ -35,6 +35,7 @@ std::unique_ptr<TrackerAdapter> make_oracle_tracker();
 std::unique_ptr<TrackerAdapter> make_mfbp_tracker(const std::string& variant);
 std::unique_ptr<TrackerAdapter> make_gnn_tracker();
 std::unique_ptr<TrackerAdapter> make_multipath_tracker();
+std::unique_ptr<TrackerAdapter> make_mptf_tracker();
 /// gmphd, gmcphd, cbmember and their -uniform/-known/-ki variants (nullptr if unknown).
 std::unique_ptr<TrackerAdapter> make_iggm_tracker(const std::string& name);
 

@@ -19,6 +19,7 @@
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/multipath/multipath_tracker.h"
+#include "mptrack/mptf/mptf_tracker.h"
 #include "mptrack/phd/phd_filter.h"
 
 namespace tracker_cases {
@@ -97,6 +98,31 @@ struct MultipathCase {
     p.clutter_mean_count = 1.0f;
     p.min_group_size = 1;
     p.birth_existence_scale = 0.5f;
+    return p;
+  }
+  static mptrack::Measurement<float> target() { return meas(30000.0f, 0.6f, 6.0f); }
+  static mptrack::Measurement<float> grid(int i) {
+    return meas(12000.0f + 3000.0f * float(i % 10), 0.3f + 0.15f * float(i / 10), 6.0f);
+  }
+  static constexpr float kOutsideRange = 60000.0f;  // region.range_max_m = 50000
+  static constexpr float kOutsideAz = 1.5f;         // region.azimuth_max_rad = 1.2
+  static constexpr bool kChecksAmplitude = false;   // amplitude is not modelled
+  static constexpr std::uint64_t kDtUs = 16000000;
+};
+/// Multipath track fusion in its single-path configuration (heights and
+/// baseline 0: slant = ground), a fused track from one path track.
+struct MptfCase {
+  using Tracker = mptrack::MptfTracker<float, mptrack::SmallBoardCaps>;
+  static constexpr const char* kName = "mptf";
+  static Tracker::Params params() {
+    Tracker::Params p;
+    p.num_paths = 1;
+    p.paths[0] = {0.0f, 0.0f};
+    p.baseline_km = 0.0f;
+    p.region = {10000.0f, 50000.0f, 0.2f, 1.2f};
+    p.noise.range_std_m = 50.0f;
+    p.clutter_mean_count = 1.0f;
+    p.fuse_min_paths = 1;
     return p;
   }
   static mptrack::Measurement<float> target() { return meas(30000.0f, 0.6f, 6.0f); }

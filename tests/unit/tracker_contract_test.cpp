@@ -16,7 +16,7 @@
 using mptrack::Status;
 using namespace tracker_cases;
 
-#define MPTRACK_CONTRACT_CASES GnnCase, MfbpCase, MfbpSmootherCase, PhdCase, CphdCase, CbmCase, MultipathCase
+#define MPTRACK_CONTRACT_CASES GnnCase, MfbpCase, MfbpSmootherCase, PhdCase, CphdCase, CbmCase, MultipathCase, MptfCase
 
 namespace {
 
@@ -28,6 +28,7 @@ static_assert(mptrack::is_tracker_v<PhdCase::Tracker>);
 static_assert(mptrack::is_tracker_v<CphdCase::Tracker>);
 static_assert(mptrack::is_tracker_v<CbmCase::Tracker>);
 static_assert(mptrack::is_tracker_v<MultipathCase::Tracker>);
+static_assert(mptrack::is_tracker_v<MptfCase::Tracker>);
 
 // ... and the detector is not vacuous: a type missing one member is not a tracker.
 struct NoFlush {
