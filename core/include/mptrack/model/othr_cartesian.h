@@ -1,7 +1,8 @@
 // The OTHR ground state in the report frame of track_report.h: Cartesian
 // [x m, vx m/s, y m, vy m/s] with x = g cos theta, y = g sin theta (g in km
 // scaled to m; receiver at the origin), and its covariance J P J^T through
-// the Jacobian J of that map (docs/algorithms/mptf.md §Reports).
+// the Jacobian J of that map (docs/algorithms/multipath.md §Track management
+// and reporting; docs/algorithms/mptf.md §Reports).
 #pragma once
 
 #include <Eigen/Core>

@@ -4,8 +4,8 @@
 // inside the slant region and the range-rate span, finite, not an exact
 // duplicate of an earlier detection of the scan (measurement.h); without
 // Doppler the range rate is 0 (docs/algorithms/multipath.md §Measurements).
-// Used by the multipath track fusion tracker (docs/algorithms/mptf.md
-// §Online filter); the multipath MF-BP tracker has the same intake.
+// Used by the multipath MF-BP tracker (docs/algorithms/multipath.md) and
+// the multipath track fusion tracker (docs/algorithms/mptf.md §Online filter).
 #pragma once
 
 #include <algorithm>

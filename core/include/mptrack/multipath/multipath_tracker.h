@@ -45,9 +45,9 @@
 #include "mptrack/measurement.h"
 #include "mptrack/model/cwna_motion.h"
 #include "mptrack/model/measurement_validator.h"
+#include "mptrack/model/othr_detections.h"
 #include "mptrack/model/othr_measurement.h"
 #include "mptrack/model/spd_guard_scaled.h"
-#include "mptrack/multipath/detection_intake.h"
 #include "mptrack/multipath/fixed_lag_smoother.h"
 #include "mptrack/multipath/group_birth.h"
 #include "mptrack/multipath/multipath_caps.h"
@@ -126,9 +126,7 @@ class MultipathMfbpTracker {
       drain_smoother();  // the held-back scans belong to the old tracks
       tracks_.clear();
     }
-    model::MeasurementValidator<T> check = params_.region.validator();
-    check.doppler_span_mps = params_.range_rate_span_mps;
-    const std::size_t rejected = in_.select(scan, check, counters_);
+    const std::size_t rejected = in_.select(scan, params_.region, params_.range_rate_span_mps, counters_);
     scan_time_us_ = scan.time_us;
     set_scan_noise(scan.has_doppler);
     predict(clock_.has_time() ? clock_.elapsed_s(scan.time_us, T(0)) : T(0));
@@ -218,7 +216,7 @@ class MultipathMfbpTracker {
 
   // Step 3a: pseudo-targets, gated pairs and their evidence, then BP.
   void associate(bool first_pass) {
-    const std::size_t nv = in_.valid.size();
+    const std::size_t nv = in_.size();
     has_bp_ = false;
     if (tracks_.empty() || nv == 0) {
       for (std::size_t i = 0; i < tracks_.size(); ++i) pseudo_[i].fill(-1);
@@ -249,10 +247,10 @@ class MultipathMfbpTracker {
     std::size_t dropped = 0;
     // Only detections within the gate's range extent sqrt(gamma S_rr) can pass.
     const T half = std::sqrt(params_.gate_chi2) * lin_.L(0, 0);
-    for (std::size_t q = in_.first_at_or_above(lin_.h(0) - half); q < in_.valid.size(); ++q) {
-      const std::size_t j = in_.by_range[q];
-      if (in_.y[j](0) > lin_.h(0) + half) break;
-      model::OthrMeas<T> v = in_.y[j] - lin_.h;
+    for (std::size_t q = in_.first_at_or_above(lin_.h(0) - half); q < in_.size(); ++q) {
+      const std::size_t j = in_.by_range(q);
+      if (in_.y(j)(0) > lin_.h(0) + half) break;
+      model::OthrMeas<T> v = in_.y(j) - lin_.h;
       if (!has_doppler_) v(1) = T(0);
       const T d2 = multipath::mahalanobis2(lin_, v);
       if (!(d2 <= params_.gate_chi2)) continue;
@@ -299,7 +297,7 @@ class MultipathMfbpTracker {
       const std::size_t j = gate_j_[k];
       T d = gate_d2_[k];
       if (!predictive) {
-        const model::OthrMeas<T> v = in_.y[j] - lin_.h;
+        const model::OthrMeas<T> v = in_.y(j) - lin_.h;
         d = v(0) * v(0) / scan_r_var_(0) + v(2) * v(2) / scan_r_var_(2);
         if (has_doppler_) d += v(1) * v(1) / scan_r_var_(1);
       }
@@ -322,10 +320,10 @@ class MultipathMfbpTracker {
         for (std::size_t e = bp_.edge_begin(ui); e < bp_.edge_end(ui); ++e) {
           const T a = bp_.edge_belief(e);
           synth_w_[p] += a;
-          synth_y_[p] += a * in_.y[bp_.edge_meas(e)];
+          synth_y_[p] += a * in_.y(bp_.edge_meas(e));
           if (a > best) {
             best = a;
-            t.measurement_index = static_cast<std::int32_t>(in_.valid[bp_.edge_meas(e)]);
+            t.measurement_index = static_cast<std::int32_t>(in_.scan_index(bp_.edge_meas(e)));
           }
         }
       }
@@ -380,8 +378,8 @@ class MultipathMfbpTracker {
   // Step 5: groups of leftover detections, swept in slant range.
   void births() {
     std::size_t n = 0;
-    for (std::size_t q = 0; q < in_.valid.size(); ++q) {  // in slant-range order
-      const std::size_t j = in_.by_range[q];
+    for (std::size_t q = 0; q < in_.size(); ++q) {  // in slant-range order
+      const std::size_t j = in_.by_range(q);
       const T clutter = has_bp_ ? bp_.clutter_belief(0, j) : T(1);
       used_[j] = false;
       if (clutter >= params_.birth_clutter_belief) cand_[n++] = static_cast<std::uint16_t>(j);
@@ -396,8 +394,8 @@ class MultipathMfbpTracker {
       members[m++] = static_cast<std::uint16_t>(ja);
       for (std::size_t b = a + 1; b < n && m < max_members; ++b) {
         const std::size_t jb = cand_[b];
-        if (in_.y[jb](0) - in_.y[ja](0) > params_.group_range_m * T(1e-3)) break;  // sorted by range
-        if (!used_[jb] && close(in_.y[ja], in_.y[jb])) members[m++] = static_cast<std::uint16_t>(jb);
+        if (in_.y(jb)(0) - in_.y(ja)(0) > params_.group_range_m * T(1e-3)) break;  // sorted by range
+        if (!used_[jb] && close(in_.y(ja), in_.y(jb))) members[m++] = static_cast<std::uint16_t>(jb);
       }
       if (m < params_.min_group_size) continue;
       if (try_birth(members.data(), m)) {
@@ -415,7 +413,7 @@ class MultipathMfbpTracker {
 
   bool try_birth(const std::uint16_t* members, std::size_t m) {
     std::array<model::OthrMeas<T>, multipath::kMaxGroup> ys{};
-    for (std::size_t k = 0; k < m; ++k) ys[k] = in_.y[members[k]];
+    for (std::size_t k = 0; k < m; ++k) ys[k] = in_.y(members[k]);
     model::OthrMeas<T> sigma;
     for (int r = 0; r < 3; ++r) sigma(r) = std::sqrt(scan_r_var_(r));
     multipath::GroupHypothesis<T> second;
@@ -423,9 +421,9 @@ class MultipathMfbpTracker {
         ys.data(), m, params_.paths.data(), params_.num_paths, params_.baseline_km, sigma, &second,
         params_.birth_distinct_range_m * T(1e-3));
     if (!h.valid || h.spread_per_dof > params_.birth_max_spread) return false;
-    if (!spawn(h, m, in_.valid[members[0]])) return false;
+    if (!spawn(h, m, in_.scan_index(members[0]))) return false;
     if (params_.birth_ambiguous_both && second.valid && !(second.spread_per_dof > params_.birth_max_spread)) {
-      static_cast<void>(spawn(second, m, in_.valid[members[0]]));
+      static_cast<void>(spawn(second, m, in_.scan_index(members[0])));
     }
     return true;
   }
@@ -478,7 +476,7 @@ class MultipathMfbpTracker {
     slot.has_doppler = has_doppler_;
     for (std::size_t a = 0; a < cand_n_; ++a) {
       const std::size_t j = cand_[a];
-      if (!used_[j]) static_cast<void>(slot.leftovers.push_back({in_.y[j], in_.valid[j], false}));  // <= scan size
+      if (!used_[j]) static_cast<void>(slot.leftovers.push_back({in_.y(j), static_cast<std::uint16_t>(in_.scan_index(j)), false}));  // <= scan size
     }
     for (const Track& t : tracks_) {
       if (!smoother_.record(multipath::lag_entry(t, last_dt_s_))) ++counters_.track_cap_hits;
@@ -526,7 +524,7 @@ class MultipathMfbpTracker {
   model::OthrMeas<T> scan_r_var_ = model::OthrMeas<T>::Ones();
   bool has_doppler_ = false;
   // Per-step scratch (members, not stack).
-  multipath::DetectionIntake<T, kMaxMeasurements> in_;
+  model::OthrDetections<T, kMaxMeasurements> in_;  ///< this scan's valid detections, in slant-range order too
   std::array<std::array<std::int32_t, kMaxPaths>, kMaxTracks> pseudo_{};  ///< BP index of (i, tau), -1 = none
   Bp bp_;
   bool has_bp_ = false;

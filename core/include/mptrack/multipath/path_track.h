@@ -90,25 +90,4 @@ T existence_update(T prior1, const T* detected, std::size_t num_paths, const T* 
   return prior1 / (prior1 + prior0 * dmath::dexp(diff));
 }
 
-/// The ground state in the report frame of track_report.h: Cartesian
-/// [x m, vx m/s, y m, vy m/s] with x = g cos theta, y = g sin theta (g in km
-/// scaled to m), and its covariance J P J^T through the Jacobian J of that map.
-template <class T>
-void ground_to_cartesian(const model::OthrState<T>& x, const Mat4<T>& P, Eigen::Matrix<T, 4, 1>& xc,
-                         Mat4<T>& Pc) {
-  T s;
-  T c;
-  dmath::dsincos(x(2), s, c);
-  const T k = T(1000);  // km -> m
-  const T g = x(0), gd = x(1), td = x(3);
-  xc << k * g * c, k * (gd * c - g * td * s), k * g * s, k * (gd * s + g * td * c);
-  Mat4<T> J;
-  J << k * c, T(0), -k * g * s, T(0),                                    //
-      -k * td * s, k * c, -k * (gd * s + g * td * c), -k * g * s,       //
-      k * s, T(0), k * g * c, T(0),                                      //
-      k * td * c, k * s, k * (gd * c - g * td * s), k * g * c;
-  const Mat4<T> JP = J * P;
-  Pc = JP * J.transpose();
-}
-
 }  // namespace mptrack::multipath

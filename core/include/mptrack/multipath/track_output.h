@@ -1,10 +1,11 @@
 // What the multipath tracker puts in its outputs: ground tracks as
-// Cartesian reports (path_track.h, ground_to_cartesian), at once or after
+// Cartesian reports (model/othr_cartesian.h), at once or after
 // fixed-lag smoothing (fixed_lag_smoother.h).
 #pragma once
 
 #include <cstdint>
 
+#include "mptrack/model/othr_cartesian.h"
 #include "mptrack/multipath/fixed_lag_smoother.h"
 #include "mptrack/multipath/path_track.h"
 #include "mptrack/track_report.h"
@@ -30,7 +31,7 @@ void add_ground_report(Estimate& e, std::uint32_t id, const model::OthrState<T>&
                        bool counted, std::int32_t measurement_index) {
   TrackReport<T> r;
   r.id = id;
-  ground_to_cartesian(x, P, r.state, r.covariance);
+  model::othr_ground_to_cartesian(x, P, r.state, r.covariance);
   r.existence = existence;
   r.confirmed = counted;
   r.measurement_index = measurement_index;
