@@ -4,6 +4,8 @@
 
 static mptrack_mfbp_storage g_mfbp_memory;
 static mptrack_gnn_storage g_gnn_memory;
+static mptrack_gmphd_storage g_gmphd_memory;
+static mptrack_cbmember_storage g_cbmember_memory;
 
 uint64_t c_api_scene_time_us(uint32_t k) { return 1250000u * (uint64_t)(k + 1u); }
 
@@ -51,6 +53,16 @@ void c_api_scene_gnn_params(mptrack_gnn_params* p) {
   p->init_velocity_std_mps = 50.0f;
 }
 
+void c_api_scene_rfs_params(mptrack_rfs_params* p) {
+  mptrack_rfs_default_params(p);
+  p->region.range_min_m = 10000.0f;
+  p->region.range_max_m = 50000.0f;
+  p->region.azimuth_min_rad = 0.17453292f;
+  p->region.azimuth_max_rad = 1.0471976f;
+  p->noise.range_std_m = 20.0f;
+  p->noise.azimuth_std_rad = 0.0104719755f;
+}
+
 /* Appends every track of every output of the last call. */
 static mptrack_status record_outputs(const mptrack_tracker* t, c_api_record* records, size_t capacity,
                                      size_t* n) {
@@ -85,10 +97,20 @@ mptrack_status c_api_scene_run(c_api_tracker which, c_api_record* records, size_
     mptrack_mfbp_params p;
     mptrack_mfbp_default_params(&p);
     s = mptrack_mfbp_init(&g_mfbp_memory, sizeof g_mfbp_memory, &p, &t, NULL);
-  } else {
+  } else if (which == kCApiGnn) {
     mptrack_gnn_params p;
     c_api_scene_gnn_params(&p);
     s = mptrack_gnn_init(&g_gnn_memory, sizeof g_gnn_memory, &p, &t, NULL);
+  } else {
+    mptrack_rfs_params p;
+    c_api_scene_rfs_params(&p);
+    if (which == kCApiGmPhd) {
+      s = mptrack_gmphd_init(&g_gmphd_memory, sizeof g_gmphd_memory, &p, &t, NULL);
+    } else if (which == kCApiGmCphd) {
+      s = mptrack_gmcphd_init(&g_gmphd_memory, sizeof g_gmphd_memory, &p, &t, NULL);
+    } else {
+      s = mptrack_cbmember_init(&g_cbmember_memory, sizeof g_cbmember_memory, &p, &t, NULL);
+    }
   }
   if (s != MPTRACK_OK) return s;
   for (k = 0; k < kCApiSceneScans; ++k) {

@@ -31,7 +31,17 @@ typedef struct c_api_record {
   mptrack_track track;
 } c_api_record;
 
-typedef enum c_api_tracker { kCApiMfbp = 0, kCApiGnn = 1 } c_api_tracker;
+/* The scene's GM-PHD / GM-CPHD / CBMeMBer parameters (polar defaults with
+ * the scene's region and noise). */
+void c_api_scene_rfs_params(mptrack_rfs_params* p);
+
+typedef enum c_api_tracker {
+  kCApiMfbp = 0,
+  kCApiGnn = 1,
+  kCApiGmPhd = 2,
+  kCApiGmCphd = 3,
+  kCApiCbMember = 4
+} c_api_tracker;
 
 /* Runs the scene through the C API (static memory), flushes, and records
  * every track of every finalised scan. Returns MPTRACK_OK or the first

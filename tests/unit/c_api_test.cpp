@@ -13,6 +13,8 @@
 #include "c_api_scene.h"
 #include "mptrack/c/mptrack_c.h"
 #include "mptrack/caps.h"
+#include "mptrack/cbmember/cbmember_filter.h"
+#include "mptrack/phd/phd_filter.h"
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 
@@ -135,6 +137,36 @@ TEST_CASE("GNN through the C API reports the C++ tracker's tracks bit for bit") 
   CHECK(c.tracks_confirmed == tracker.counters().tracks_confirmed);
 }
 
+/// The scene's RFS parameters, written out independently of c_api_scene.c.
+mptrack::RfsFilterParams<float> scene_rfs_params() {
+  mptrack::RfsFilterParams<float> p;
+  p.space = mptrack::MeasurementSpace::kPolar;
+  p.region = {10000.0f, 50000.0f, 0.17453292f, 1.0471976f};
+  p.noise.range_std_m = 20.0f;
+  p.noise.azimuth_std_rad = 0.0104719755f;
+  p.hotspot_half_width0 = 500.0f;
+  p.hotspot_half_width1 = 0.034906585f;
+  return p;
+}
+
+template <class X>
+void check_rfs_filter(c_api_tracker which) {
+  mptrack_counters c{};
+  const std::vector<c_api_record> from_c = run_c(which, c);
+  static X tracker;
+  REQUIRE(tracker.init(scene_rfs_params()) == mptrack::Status::kOk);
+  const std::vector<c_api_record> from_cpp = run_cpp(tracker);
+  CHECK(!from_c.empty());
+  require_bit_identical(from_c, from_cpp);
+  CHECK(c.measurements_invalid == tracker.counters().measurements_invalid);
+}
+
+TEST_CASE("GM-PHD, GM-CPHD and CBMeMBer through the C API report the C++ filters' tracks bit for bit") {
+  SUBCASE("GM-PHD") { check_rfs_filter<mptrack::GmPhdFilter<float, mptrack::DefaultCaps>>(kCApiGmPhd); }
+  SUBCASE("GM-CPHD") { check_rfs_filter<mptrack::GmCphdFilter<float, mptrack::DefaultCaps>>(kCApiGmCphd); }
+  SUBCASE("CBMeMBer") { check_rfs_filter<mptrack::CbMemberFilter<float, mptrack::DefaultCaps>>(kCApiCbMember); }
+}
+
 TEST_CASE("mptrack_status_string names every status and no other value") {
   CHECK(std::string(mptrack_status_string(MPTRACK_OK)) == "ok");
   CHECK(std::string(mptrack_status_string(MPTRACK_INVALID_ARGUMENT)) == "invalid_argument");
@@ -147,6 +179,9 @@ TEST_CASE("mptrack_status_string names every status and no other value") {
 TEST_CASE("init refuses memory that is too small, misaligned or missing") {
   CHECK(mptrack_mfbp_size() <= sizeof(mptrack_mfbp_storage));
   CHECK(mptrack_gnn_size() <= sizeof(mptrack_gnn_storage));
+  CHECK(mptrack_gmphd_size() <= sizeof(mptrack_gmphd_storage));
+  CHECK(mptrack_gmcphd_size() <= sizeof(mptrack_gmphd_storage));
+  CHECK(mptrack_cbmember_size() <= sizeof(mptrack_cbmember_storage));
   CHECK(mptrack_mfbp_alignment() <= alignof(mptrack_mfbp_storage));
   mptrack_mfbp_params p;
   mptrack_mfbp_default_params(&p);

@@ -16,8 +16,9 @@
  * allocates, throws or keeps a pointer to caller data beyond a call.
  * Not thread-safe per tracker; distinct trackers are independent.
  *
- * Trackers (all float): mfbp (MF-BP smoother, DefaultCaps: 64 tracks, 256
- * detections per scan, window <= 7) and gnn (GNN + Kalman, DefaultCaps).
+ * Trackers (all float, DefaultCaps: 64 tracks, 256 detections per scan):
+ * mfbp (MF-BP smoother, window <= 7), gnn (GNN + Kalman), gmphd, gmcphd and
+ * cbmember (the IGGM filters of seed 001, polar measurements).
  */
 #ifndef MPTRACK_C_MPTRACK_C_H
 #define MPTRACK_C_MPTRACK_C_H
@@ -214,6 +215,73 @@ size_t mptrack_gnn_size(void);
 size_t mptrack_gnn_alignment(void);
 mptrack_status mptrack_gnn_init(void* memory, size_t size, const mptrack_gnn_params* params,
                                 mptrack_tracker** tracker, mptrack_param_error* error);
+
+/* ---- GM-PHD, GM-CPHD, CBMeMBer (seed 001; docs/algorithms/gm-phd.md) ----- */
+
+/* Clutter models of the IGGM filters (mptrack::ClutterMode subset). */
+typedef enum mptrack_rfs_clutter_mode {
+  MPTRACK_RFS_CLUTTER_ESTIMATED_MAP = 0,      /* uniform + hot spots, estimated */
+  MPTRACK_RFS_CLUTTER_ESTIMATED_UNIFORM = 1,  /* uniform, rate and scale estimated */
+  MPTRACK_RFS_CLUTTER_KNOWN_UNIFORM = 2       /* uniform, clutter_rate and clutter_scale known */
+} mptrack_rfs_clutter_mode;
+
+/* One block for the three filters, in polar measurement space; every other
+ * RfsFilterParams field keeps its C++ default (rfs_params.h). */
+typedef struct mptrack_rfs_params {
+  mptrack_polar_region region;
+  mptrack_polar_noise noise;     /* Doppler unused */
+  float scan_period_s;           /* nominal scan period [s] */
+  float max_gap_s;               /* a later scan drops the target mixture [s] */
+  float accel_var_m2ps4;         /* CV white-acceleration variance per axis [m^2/s^4] */
+  float survival_prob;           /* p_S [-] */
+  float birth_rate;              /* expected births per scan [-] */
+  float birth_velocity_std_mps;  /* velocity std of a birth component [m/s] */
+  int use_amplitude;             /* non-zero: amplitude likelihoods */
+  float amplitude_threshold;     /* detector threshold d on the normalised envelope [-] */
+  float target_power_prior;      /* prior mean of 1 + SNR at birth [-] */
+  float detection_prob;          /* P_D when use_amplitude is 0 [-] */
+  mptrack_rfs_clutter_mode clutter_mode;
+  float clutter_rate;            /* known (or prior) clutter detections per scan [-] */
+  float clutter_scale;           /* known (or prior) clutter Weibull scale, normalised [-] */
+  float hotspot_half_width_range_m;     /* hot-spot seed box half-width in range [m] */
+  float hotspot_half_width_azimuth_rad; /* ... in azimuth [rad] */
+  float gate_probability;        /* kinematic gate probability [-] */
+  float extract_threshold;       /* GM-PHD / GM-CPHD: report components above this weight [-] */
+  float existence_extract;       /* CBMeMBer: report tracks with existence above this [-] */
+} mptrack_rfs_params;
+
+/* RfsFilterParams's defaults in polar space, with a 500 m x 2 deg hot-spot
+ * box (the Cartesian default of 30 would be 30 rad). */
+void mptrack_rfs_default_params(mptrack_rfs_params* params);
+
+#define MPTRACK_GMPHD_STORAGE_BYTES 253952u    /* 248 KiB: GM-PHD or GM-CPHD, DefaultCaps (~242 KiB) */
+#define MPTRACK_CBMEMBER_STORAGE_BYTES 614400u /* 600 KiB: CBMeMBer, DefaultCaps (~595 KiB) */
+typedef union mptrack_gmphd_storage {
+  unsigned char bytes[MPTRACK_GMPHD_STORAGE_BYTES];
+  uint64_t align_u64;
+  double align_double;
+  void* align_pointer;
+} mptrack_gmphd_storage;
+typedef union mptrack_cbmember_storage {
+  unsigned char bytes[MPTRACK_CBMEMBER_STORAGE_BYTES];
+  uint64_t align_u64;
+  double align_double;
+  void* align_pointer;
+} mptrack_cbmember_storage;
+
+size_t mptrack_gmphd_size(void);
+size_t mptrack_gmphd_alignment(void);
+mptrack_status mptrack_gmphd_init(void* memory, size_t size, const mptrack_rfs_params* params,
+                                  mptrack_tracker** tracker, mptrack_param_error* error);
+/* GM-CPHD: same storage as GM-PHD (mptrack_gmphd_storage). */
+size_t mptrack_gmcphd_size(void);
+size_t mptrack_gmcphd_alignment(void);
+mptrack_status mptrack_gmcphd_init(void* memory, size_t size, const mptrack_rfs_params* params,
+                                   mptrack_tracker** tracker, mptrack_param_error* error);
+size_t mptrack_cbmember_size(void);
+size_t mptrack_cbmember_alignment(void);
+mptrack_status mptrack_cbmember_init(void* memory, size_t size, const mptrack_rfs_params* params,
+                                     mptrack_tracker** tracker, mptrack_param_error* error);
 
 /* ---- every tracker -------------------------------------------------------- */
 
