@@ -42,25 +42,25 @@ size_t c_api_scene_scan(uint32_t k, mptrack_detection* out) {
   return n;
 }
 
+/* MF-BP's default region and noise (seed 000), for the other trackers. */
+static void set_scene_sensor(mptrack_polar_region* region, mptrack_polar_noise* noise) {
+  region->range_min_m = 10000.0f;
+  region->range_max_m = 50000.0f;
+  region->azimuth_min_rad = 0.17453292f;
+  region->azimuth_max_rad = 1.0471976f;
+  noise->range_std_m = 20.0f;
+  noise->azimuth_std_rad = 0.0104719755f;
+}
+
 void c_api_scene_gnn_params(mptrack_gnn_params* p) {
   mptrack_gnn_default_params(p);
-  p->region.range_min_m = 10000.0f;
-  p->region.range_max_m = 50000.0f;
-  p->region.azimuth_min_rad = 0.17453292f;
-  p->region.azimuth_max_rad = 1.0471976f;
-  p->noise.range_std_m = 20.0f;
-  p->noise.azimuth_std_rad = 0.0104719755f;
+  set_scene_sensor(&p->region, &p->noise);
   p->init_velocity_std_mps = 50.0f;
 }
 
 void c_api_scene_rfs_params(mptrack_rfs_params* p) {
   mptrack_rfs_default_params(p);
-  p->region.range_min_m = 10000.0f;
-  p->region.range_max_m = 50000.0f;
-  p->region.azimuth_min_rad = 0.17453292f;
-  p->region.azimuth_max_rad = 1.0471976f;
-  p->noise.range_std_m = 20.0f;
-  p->noise.azimuth_std_rad = 0.0104719755f;
+  set_scene_sensor(&p->region, &p->noise);
 }
 
 /* Appends every track of every output of the last call. */
