@@ -4,6 +4,7 @@
  *   mptrack_<tracker>_size() / mptrack_<tracker>_alignment()  bytes a tracker needs
  *   (or mptrack_<tracker>_storage, a union sized for every target)
  *   mptrack_<tracker>_default_params(&p)                     the C++ Params defaults
+ *   (one block and mptrack_rfs_default_params for gmphd, gmcphd, cbmember)
  *   mptrack_<tracker>_init(memory, size, &p, &tracker, &err)  construct in that memory
  * then, for every tracker alike,
  *   mptrack_step(tracker, &scan)      one scan of detections
@@ -295,6 +296,8 @@ mptrack_status mptrack_step(mptrack_tracker* tracker, const mptrack_scan* scan);
 mptrack_status mptrack_flush(mptrack_tracker* tracker);
 /* Scans finalised by the last step()/flush() (0 after a refused call). */
 size_t mptrack_num_outputs(const mptrack_tracker* tracker);
+/* Time, scan index and track count of finalised scan `output` (0-based,
+ * < mptrack_num_outputs(); otherwise MPTRACK_INVALID_ARGUMENT). */
 mptrack_status mptrack_output(const mptrack_tracker* tracker, size_t output, mptrack_output_info* info);
 /* Copies up to capacity tracks of finalised scan `output`; *count = tracks
  * copied. MPTRACK_CAPACITY_EXCEEDED if the scan has more than capacity. */
