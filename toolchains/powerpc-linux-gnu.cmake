@@ -14,6 +14,12 @@ if(NOT MPTRACK_CXX)
   message(FATAL_ERROR "${MPTRACK_TRIPLE}-g++ not found: apt-get install g++-powerpc-linux-gnu")
 endif()
 set(CMAKE_CXX_COMPILER ${MPTRACK_CXX})
+# C: the C API's test and example (mptrack_c.h; tests/CMakeLists.txt).
+find_program(MPTRACK_CC ${MPTRACK_TRIPLE}-gcc NO_CACHE)
+if(NOT MPTRACK_CC)
+  message(FATAL_ERROR "${MPTRACK_TRIPLE}-gcc not found: apt-get install gcc-${MPTRACK_TRIPLE}")
+endif()
+set(CMAKE_C_COMPILER ${MPTRACK_CC})
 
 # Hard float, big-endian (the triple's defaults, spelled out).
 set(MPTRACK_CPU_FLAGS_DEFAULT "-mbig-endian -mhard-float")
