@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -297,6 +298,8 @@ bool write_results(const std::string& dir, const std::vector<RunRecord>& runs, c
 
   bool ok = true;
   {
+    std::error_code ec;  // the build-tree default may not exist yet
+    std::filesystem::create_directories(dir, ec);
     std::ofstream f_json(dir + "/results.json");
     f_json << out.dump(2) << "\n";
     ok = ok && static_cast<bool>(f_json);
