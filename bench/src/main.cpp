@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
 
   mptrack::bench::register_fft_benchmarks();
   mptrack::bench::register_frontend_benchmarks();
+  mptrack::bench::register_cfar_benchmarks();
   mptrack::bench::register_tracker_benchmarks(quick);
 
   benchmark::Initialize(&n, args.data());

@@ -246,6 +246,13 @@ class FrontEnd {
 
   bool is_local_max(std::size_t g, std::size_t d, std::size_t a, float p) const {
     const std::size_t self = AngleProcessor<Caps>::map_index(g, d, a);
+    // Range neighbours first (same line, contiguous): two of the 26 tests
+    // below, repeated here because in noise they reject two cells in three
+    // before the strided Doppler/angle reads. A conjunction, so the answer
+    // is unchanged.
+    const float* map = ang_.power_map();
+    if (g > 0 && map[self - 1] >= p) return false;  // lower index: ties lose
+    if (g + 1 < kNumRangeBins && map[self + 1] > p) return false;
     for (int dd = -1; dd <= 1; ++dd) {
       std::size_t d2 = d;
       if constexpr (kNc > 1) {
