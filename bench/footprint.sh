@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cortex-M7 footprint report -> bench/footprint.json (run by `./run bench`).
+# Cortex-M7 footprint report -> OUT_JSON (run by `./run bench`: build/bench-results/footprint.json).
 #   bench/footprint.sh [BUILD_DIR] [OUT_JSON]
 # Builds the bare-metal tree (toolchains/arm-none-eabi-cortex-m7.cmake) in
 # BUILD_DIR (default build/m7-footprint) with -fstack-usage and
@@ -15,7 +15,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${1:-$ROOT/build/m7-footprint}
-OUT=${2:-$ROOT/bench/footprint.json}
+OUT=${2:-$BUILD/footprint.json}
 SMALL_BOARD_BUDGET=65536     # SmallBoard preset: tracker state in 64 KiB
 DEFAULT_BUDGET=524288        # Default preset: everything in the 512 KiB SRAM of cortex_m7.ld
 

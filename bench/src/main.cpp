@@ -5,7 +5,8 @@
 // Runs every benchmark group (FFT vs FFTW, front-end frame, tracker
 // latency on seed 000 S2 and on the workload grid), prints Google
 // Benchmark's console output, then writes DIR/results.json and
-// DIR/latency.svg (DIR defaults to the source tree's bench/) and prints a
+// DIR/latency.svg (DIR defaults to <build>/bench/results, created if
+// missing; never the source tree) and prints a
 // summary table with the goals of the performance issue.
 // --quick: a reduced workload grid (about a minute).
 #include <benchmark/benchmark.h>
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
 
   mptrack::bench::register_fft_benchmarks();
   mptrack::bench::register_frontend_benchmarks();
+  mptrack::bench::register_cfar_benchmarks();
   mptrack::bench::register_tracker_benchmarks(quick);
 
   benchmark::Initialize(&n, args.data());

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -187,7 +188,7 @@ bool write_results(const std::string& dir, const std::vector<RunRecord>& runs, c
                     {"build_type", machine.build_type},     {"compiler", machine.compiler},
                     {"timestamp_utc", machine.timestamp_utc}};
   // --- FFT ---
-  std::map<int, std::pair<double, double>> fft;  // size -> (ours ns, fftw ns)
+  std::map<int, std::pair<std::vector<double>, std::vector<double>>> fft_reps;  // size -> CPU ns per repetition
   json frontend = json::object();
   json s2 = json::object();
   std::vector<GridPoint> grid;
@@ -204,10 +205,9 @@ bool write_results(const std::string& dir, const std::vector<RunRecord>& runs, c
     }
     if (parts[0] == "fft" && parts.size() == 3) {
       // CPU time (the thread's own, so time slices lost to other processes
-      // on a shared machine do not count), minimum over the repetitions.
-      auto& e = fft[std::stoi(parts[2])];
-      double& slot = parts[1] == "ours" ? e.first : e.second;
-      slot = slot > 0.0 ? std::min(slot, r.cpu_ns) : r.cpu_ns;
+      // on a shared machine do not count); the median of the repetitions below.
+      auto& e = fft_reps[std::stoi(parts[2])];
+      (parts[1] == "ours" ? e.first : e.second).push_back(r.cpu_ns);
     } else if (parts[0] == "frontend" && parts.size() == 2) {
       frontend[parts[1]] = {{"frame_us", r.time_ns * 1e-3},
                             {"detections", counter(r, "detections")},
@@ -236,6 +236,15 @@ bool write_results(const std::string& dir, const std::vector<RunRecord>& runs, c
       grid.push_back(p);
     }
   }
+  // size -> (ours ns, fftw ns): median of the repetitions (>= 5), each side.
+  auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  };
+  std::map<int, std::pair<double, double>> fft;
+  for (const auto& kv : fft_reps) fft[kv.first] = {median(kv.second.first), median(kv.second.second)};
   json fft_rows = json::array();
   json ratios = json::object();
   double worst_ratio = 0.0;
@@ -250,7 +259,7 @@ bool write_results(const std::string& dir, const std::vector<RunRecord>& runs, c
     out["fft_vs_fftw_ratio_" + std::to_string(kv.first)] = ratio;
   }
   out["fft"] = {{"reference", "FFTW 3 float, FFTW_MEASURE, single thread, out-of-place interleaved"},
-                {"timing", "thread CPU time per transform, minimum of 5 repetitions"},
+                {"timing", "thread CPU time per transform, median of 5 interleaved repetitions"},
                 {"sizes", fft_rows}};
   out["fft_vs_fftw_ratio"] = ratios;
   out["frontend"] = frontend;
@@ -297,6 +306,8 @@ bool write_results(const std::string& dir, const std::vector<RunRecord>& runs, c
 
   bool ok = true;
   {
+    std::error_code ec;  // the build-tree default may not exist yet
+    std::filesystem::create_directories(dir, ec);
     std::ofstream f_json(dir + "/results.json");
     f_json << out.dump(2) << "\n";
     ok = ok && static_cast<bool>(f_json);

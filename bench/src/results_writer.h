@@ -1,4 +1,4 @@
-// Turns the benchmark runs into bench/results.json, bench/latency.svg and
+// Turns the benchmark runs into <out>/results.json, <out>/latency.svg and
 // the summary table printed by `./run bench`.
 #pragma once
 

@@ -25,6 +25,7 @@
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
 #include "mptrack/vmp/vmp_tracker.h"
+#include "mptrack/frontend/cfar_line.h"
 
 namespace mptrack {
 
@@ -97,5 +98,14 @@ template struct MultipathParams<float>;
 static_assert(caps_are_valid<DefaultCaps>());
 static_assert(caps_are_valid<SmallBoardCaps>());
 static_assert(caps_are_valid<LargeCaps>());
+
+// cfar_line is inline and FrontEnd does not call it (it tests CFAR at local
+// maxima only): a named caller emits it for the nm no-heap check.
+std::size_t frontend_cfar_line_instance(const frontend::Cfar& c, const float* line, std::size_t len,
+                                        frontend::CfarResult* out);
+std::size_t frontend_cfar_line_instance(const frontend::Cfar& c, const float* line, std::size_t len,
+                                        frontend::CfarResult* out) {
+  return frontend::cfar_line(c, line, len, out);
+}
 
 }  // namespace mptrack

@@ -30,7 +30,7 @@ json builtin_json(const char* name) {
 }  // namespace
 
 TEST_CASE("adc json: the shipped scenario files load to exactly the built-ins") {
-  for (const std::string name : {"seed004-drones", "mimo-interference"}) {
+  for (const std::string name : {"seed004-drones", "mimo-interference", "strong-target"}) {
     adc::AdcScenario builtin;
     REQUIRE(adc::builtin_adc_scenario(name, builtin));
     const std::string path = std::string(MPTRACK_SCENARIO_DIR) + "/" + name + ".json";

@@ -4,14 +4,14 @@
 // process. Each runs on a private stack (ucontext) pre-filled with a
 // pattern; afterwards the bytes the pattern still covers, counted from the
 // far end, give the deepest use. This is the measured counterpart of the
-// Cortex-M7 -fstack-usage call-graph sums in bench/footprint.json, and runs
+// Cortex-M7 -fstack-usage call-graph sums in docs/results/bench/footprint.json, and runs
 // on every Linux target (host, and aarch64/armhf under qemu-user). The
 // objects and the scans live on the heap, so only the call's own frames
 // count. The empty-call overhead (makecontext trampoline) is subtracted.
 //
 // Budgets (bench/README.md "Stack"): each figure must stay under the
 // budget below on every target; ./run bench writes the measured bytes to
-// bench/footprint.json ("painted_stack"), via MPTRACK_STACK_JSON=<file>.
+// build/bench-results/footprint.json ("painted_stack"), via MPTRACK_STACK_JSON=<file>.
 #include <doctest/doctest.h>
 
 #include <ucontext.h>
@@ -40,7 +40,7 @@ using mptrack::Status;
 // (x86-64, aarch64, armhf). Measured (GCC 12, -O3): MF-BP 2936 / 3152 /
 // 2912 B, GNN 464 / 640 / 384 B, GM-PHD 672 / 896 / 696 B, front end
 // 952 / 1120 / 740 B (x86-64 / aarch64 / armhf). The MF-BP budget is the
-// Cortex-M7 call-graph figure's order (bench/footprint.json); the others
+// Cortex-M7 call-graph figure's order (docs/results/bench/footprint.json); the others
 // leave about 2x headroom over the largest target.
 constexpr std::size_t kBudgetMfbp = 6 * 1024;
 constexpr std::size_t kBudgetGnn = 1536;

@@ -46,7 +46,7 @@ struct DefaultCaps {
 
 /// Small board: fits a 64 KiB RAM budget (see README, footprint report).
 /// Fits 64 KiB: MfbpTracker<float, SmallBoardCaps> state + step() stack
-/// (bench/footprint.json). The MF-BP window stops at 4 scans (run it with
+/// (docs/results/bench/footprint.json). The MF-BP window stops at 4 scans (run it with
 /// window_length 4, slide 2, or as the online filter): every window scan
 /// costs ~7.9 KB here, and window 4 loses little (20/10 runs: S1 36.8 m vs
 /// 34.1 m at window 7, S2 87.0 m vs 89.9 m; docs/results/seed000-s1.md).

@@ -281,9 +281,29 @@ AdcScenario mimo_interference() {
   return s;
 }
 
+AdcScenario strong_target() {
+  AdcScenario s = seed004_drones();
+  s.name = "strong-target";
+  s.description =
+      "One strong drone alone in noise (issue 16: false tracks from range/angle sidelobes): seed004-drones' "
+      "radar and front end, a Swerling-3 0.05 m^2 drone at 14.4 m (~28 dB, as drone 1 at the start of "
+      "seed 004) moving 0.5 m/s across the line of sight (14.4 -> 15.2 m, SNR within 1 dB), 100 frames";
+  DroneSpec d;
+  d.id = 1;
+  d.start_m = {12.0, 8.0};
+  d.velocity_mps = {-0.2773500981126146, 0.4160251471689219};  // 0.5 m/s, perpendicular to start_m
+  d.birth_frame = 1;
+  d.death_frame = 100;
+  s.drones = {d};
+  s.phases = {EvalPhase{"all", 1, 100}};
+  return s;
+}
+
 }  // namespace
 
-std::vector<std::string> builtin_adc_scenario_names() { return {"seed004-drones", "mimo-interference"}; }
+std::vector<std::string> builtin_adc_scenario_names() {
+  return {"seed004-drones", "mimo-interference", "strong-target"};
+}
 
 bool builtin_adc_scenario(const std::string& name, AdcScenario& out) {
   if (name == "seed004-drones") {
@@ -292,6 +312,10 @@ bool builtin_adc_scenario(const std::string& name, AdcScenario& out) {
   }
   if (name == "mimo-interference") {
     out = mimo_interference();
+    return true;
+  }
+  if (name == "strong-target") {
+    out = strong_target();
     return true;
   }
   return false;

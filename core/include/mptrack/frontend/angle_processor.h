@@ -53,6 +53,8 @@ class AngleProcessor {
   static constexpr std::size_t kNumVirtual = Caps::kNumTx * Caps::kNumRx;
   static constexpr std::size_t kNumRangeBins = Caps::kNumRangeBins;
   static constexpr std::size_t kMapSize = kNc * kNa * kNumRangeBins;
+  /// Range bins per block of process() (16 floats: one 64-byte map line).
+  static constexpr std::size_t kBlock = 16;
 
   Status init(const FrontEndParams& p) {
     initialized_ = false;
@@ -78,22 +80,29 @@ class AngleProcessor {
   /// Beamforms every (g, d) cell of dp into the power map.
   Status process(const DopplerProcessor<Caps>& dp) {
     if (!initialized_) return Status::kNotInitialized;
-    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+    // Blocks of kBlock range bins, Doppler outside: each (d, a) row of the
+    // map [d][a][g] then receives kBlock adjacent values (one 64-byte line)
+    // while the block's snapshots stay in cache across d. Every cell's
+    // operations are unchanged; only the order of the cells.
+    for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
+      const std::size_t g_end = kNumRangeBins - g0 < kBlock ? kNumRangeBins : g0 + kBlock;
       for (std::size_t d = 0; d < kNc; ++d) {
-        const float* xr = dp.snapshot_re(g, d);
-        const float* xi = dp.snapshot_im(g, d);
-        for (std::size_t v = 0; v < kNumVirtual; ++v) {
-          buf_re_[v] = xr[v] * window_[v];
-          buf_im_[v] = xi[v] * window_[v];
-        }
-        for (std::size_t v = kNumVirtual; v < kNa; ++v) {
-          buf_re_[v] = 0.0f;
-          buf_im_[v] = 0.0f;
-        }
-        fft_.forward(buf_re_.data(), buf_im_.data());
-        for (std::size_t k = 0; k < kNa; ++k) {
-          const std::size_t a = (k + kNa / 2) % kNa;  // fftshift: a = h + N_A/2
-          map_[map_index(g, d, a)] = buf_re_[k] * buf_re_[k] + buf_im_[k] * buf_im_[k];
+        for (std::size_t g = g0; g < g_end; ++g) {
+          const float* xr = dp.snapshot_re(g, d);
+          const float* xi = dp.snapshot_im(g, d);
+          for (std::size_t v = 0; v < kNumVirtual; ++v) {
+            buf_re_[v] = xr[v] * window_[v];
+            buf_im_[v] = xi[v] * window_[v];
+          }
+          for (std::size_t v = kNumVirtual; v < kNa; ++v) {
+            buf_re_[v] = 0.0f;
+            buf_im_[v] = 0.0f;
+          }
+          fft_.forward(buf_re_.data(), buf_im_.data());
+          for (std::size_t k = 0; k < kNa; ++k) {
+            const std::size_t a = (k + kNa / 2) % kNa;  // fftshift: a = h + N_A/2
+            map_[map_index(g, d, a)] = buf_re_[k] * buf_re_[k] + buf_im_[k] * buf_im_[k];
+          }
         }
       }
     }

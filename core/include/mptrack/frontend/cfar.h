@@ -147,45 +147,58 @@ class Cfar {
   CfarResult test(const float* line, std::size_t len, std::size_t i) const {
     CfarResult r;
     if (!initialized_ || i >= len || len < min_line_length()) return r;
-    const std::size_t g = params_.guard_cells;
-    const std::size_t t = params_.training_cells;
-    // Gather the 2T training cells in index order into scratch.
     std::array<float, kMaxTraining> cells;
-    std::size_t count = 0;
-    const std::size_t reach = g + t;
-    if (params_.edge == CfarEdge::kWrap) {
-      for (std::size_t k = 0; k < t; ++k) cells[count++] = line[(i + len - reach + k) % len];
-      for (std::size_t k = 0; k < t; ++k) cells[count++] = line[(i + g + 1 + k) % len];
-    } else {
-      const bool left_ok = i >= reach;
-      const bool right_ok = i + reach < len;
-      if (left_ok && right_ok) {
-        for (std::size_t k = 0; k < t; ++k) cells[count++] = line[i - reach + k];
-        for (std::size_t k = 0; k < t; ++k) cells[count++] = line[i + g + 1 + k];
-      } else if (params_.edge == CfarEdge::kSkip) {
-        return r;
-      } else if (!left_ok) {
-        // Left side short: take what exists, the deficit extends the right run.
-        const std::size_t have = i > g ? i - g : 0;  // cells [0, i-g)
-        const std::size_t from = have > t ? have - t : 0;
-        for (std::size_t k = from; k < have; ++k) cells[count++] = line[k];
-        const std::size_t need = 2 * t - count;
-        for (std::size_t k = 0; k < need; ++k) cells[count++] = line[i + g + 1 + k];
-      } else {
-        // Right side short: the deficit extends the left run.
-        const std::size_t start_r = i + g + 1;
-        const std::size_t have = start_r < len ? len - start_r : 0;
-        const std::size_t take_r = have < t ? have : t;
-        const std::size_t need_l = 2 * t - take_r;
-        for (std::size_t k = 0; k < need_l; ++k) cells[count++] = line[i - g - need_l + k];
-        for (std::size_t k = 0; k < take_r; ++k) cells[count++] = line[start_r + k];
-      }
-    }
+    const std::size_t count = gather_training(line, len, i, cells.data());
+    if (count == 0) return r;
     r.tested = true;
     r.noise = noise_estimate(cells.data(), count);
     r.detected = line[i] > alpha_f_ * r.noise;
     return r;
   }
+
+  /// Copies the 2T training cells of cell i, in index order (the first T
+  /// form the left half of GO/SO), into cells[0..2T) and returns 2T; 0 if
+  /// the cell has no window (kSkip edge). Preconditions as for test().
+  std::size_t gather_training(const float* line, std::size_t len, std::size_t i, float* cells) const {
+    const std::size_t g = params_.guard_cells;
+    const std::size_t t = params_.training_cells;
+    std::size_t count = 0;
+    const std::size_t reach = g + t;
+    if (params_.edge == CfarEdge::kWrap) {
+      for (std::size_t k = 0; k < t; ++k) cells[count++] = line[(i + len - reach + k) % len];
+      for (std::size_t k = 0; k < t; ++k) cells[count++] = line[(i + g + 1 + k) % len];
+      return count;
+    }
+    const bool left_ok = i >= reach;
+    const bool right_ok = i + reach < len;
+    if (left_ok && right_ok) {
+      for (std::size_t k = 0; k < t; ++k) cells[count++] = line[i - reach + k];
+      for (std::size_t k = 0; k < t; ++k) cells[count++] = line[i + g + 1 + k];
+    } else if (params_.edge == CfarEdge::kSkip) {
+      return 0;
+    } else if (!left_ok) {
+      // Left side short: take what exists, the deficit extends the right run.
+      const std::size_t have = i > g ? i - g : 0;  // cells [0, i-g)
+      const std::size_t from = have > t ? have - t : 0;
+      for (std::size_t k = from; k < have; ++k) cells[count++] = line[k];
+      const std::size_t need = 2 * t - count;
+      for (std::size_t k = 0; k < need; ++k) cells[count++] = line[i + g + 1 + k];
+    } else {
+      // Right side short: the deficit extends the left run.
+      const std::size_t start_r = i + g + 1;
+      const std::size_t have = start_r < len ? len - start_r : 0;
+      const std::size_t take_r = have < t ? have : t;
+      const std::size_t need_l = 2 * t - take_r;
+      for (std::size_t k = 0; k < need_l; ++k) cells[count++] = line[i - g - need_l + k];
+      for (std::size_t k = 0; k < take_r; ++k) cells[count++] = line[start_r + k];
+    }
+    return count;
+  }
+
+  /// Threshold factor alpha as float (the factor test() applies) [-].
+  float alpha_f() const { return alpha_f_; }
+  /// 1 / c_k, the OS normalisation (header comment) [-].
+  float os_norm() const { return os_norm_; }
 
   /// Threshold factor alpha on the noise estimate [-].
   double alpha() const { return alpha_; }

@@ -67,20 +67,13 @@ class DopplerProcessor {
   Status process(const RangeMatchedFilter<Caps>& rmf) {
     if (!initialized_) return Status::kNotInitialized;
     for (std::size_t v = 0; v < kNumVirtual; ++v) {
-      for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-        if constexpr (kHasDoppler) {
-          for (std::size_t c = 0; c < kNc; ++c) {
-            buf_re_[c] = rmf.profile_re(c, v)[g] * window_[c];
-            buf_im_[c] = rmf.profile_im(c, v)[g] * window_[c];
-          }
-          fft_.forward(buf_re_.data(), buf_im_.data());
-          for (std::size_t k = 0; k < kNc; ++k) {
-            const std::size_t d = (k + kNc / 2) % kNc;
-            const std::size_t idx = (g * kNc + d) * kNumVirtual + v;
-            snap_re_[idx] = buf_re_[k];
-            snap_im_[idx] = buf_im_[k];
-          }
-        } else {
+      if constexpr (kHasDoppler) {
+        for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
+          const std::size_t nb = kNumRangeBins - g0 < kBlock ? kNumRangeBins - g0 : kBlock;
+          transform_block(rmf, v, g0, nb);
+        }
+      } else {
+        for (std::size_t g = 0; g < kNumRangeBins; ++g) {
           const std::size_t idx = g * kNumVirtual + v;
           snap_re_[idx] = rmf.profile_re(0, v)[g];
           snap_im_[idx] = rmf.profile_im(0, v)[g];
@@ -118,10 +111,46 @@ class DopplerProcessor {
   bool initialized() const { return initialized_; }
 
  private:
+  // Range bins per block: one chirp row of a profile read as one run of
+  // kBlock floats (a 64-byte line), instead of one float per cache line when
+  // each range bin gathered its chirps separately.
+  static constexpr std::size_t kBlock = kNumRangeBins < 16 ? kNumRangeBins : 16;
+  // Row stride of the transposed block: >= 16 floats so every row starts
+  // 64-byte aligned (kNc is a power of two).
+  static constexpr std::size_t kRow = kNc < 16 ? 16 : kNc;
+
+  // Slow-time FFT of range bins [g0, g0 + nb) of channel v: windowed
+  // transpose of the chirp rows (each element w[c] x, as before), then one
+  // FFT per bin and the fftshift scatter; the same operations per bin as a
+  // per-bin gather, only the order of the bins' reads changes.
+  void transform_block(const RangeMatchedFilter<Caps>& rmf, std::size_t v, std::size_t g0, std::size_t nb) {
+    for (std::size_t c = 0; c < kNc; ++c) {
+      const float* pr = rmf.profile_re(c, v) + g0;
+      const float* pi = rmf.profile_im(c, v) + g0;
+      const float w = window_[c];
+      for (std::size_t b = 0; b < nb; ++b) {
+        blk_re_[b * kRow + c] = pr[b] * w;
+        blk_im_[b * kRow + c] = pi[b] * w;
+      }
+    }
+    for (std::size_t b = 0; b < nb; ++b) {
+      float* br = blk_re_.data() + b * kRow;
+      float* bi = blk_im_.data() + b * kRow;
+      fft_.forward(br, bi);
+      float* sr = snap_re_.data() + (g0 + b) * kNc * kNumVirtual + v;
+      float* si = snap_im_.data() + (g0 + b) * kNc * kNumVirtual + v;
+      for (std::size_t k = 0; k < kNc; ++k) {
+        const std::size_t d = (k + kNc / 2) % kNc;
+        sr[d * kNumVirtual] = br[k];
+        si[d * kNumVirtual] = bi[k];
+      }
+    }
+  }
+
   dsp::Fft<(kNc > 1 ? kNc : 2)> fft_{};
   std::array<float, kNc> window_{};
-  alignas(16) std::array<float, kNc> buf_re_{};
-  alignas(16) std::array<float, kNc> buf_im_{};
+  alignas(64) std::array<float, (kNc > 1 ? kBlock * kRow : 1)> blk_re_{};
+  alignas(64) std::array<float, (kNc > 1 ? kBlock * kRow : 1)> blk_im_{};
   std::array<float, kNumCells * kNumVirtual> snap_re_{};
   std::array<float, kNumCells * kNumVirtual> snap_im_{};
   double velocity_per_bin_mps_ = 0.0;

@@ -155,19 +155,23 @@ class RangeMatchedFilter {
  private:
   template <class Sample>
   Status load(const Sample* src) {
-    for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
-      float re;
-      float im;
-      if constexpr (std::is_same_v<Sample, float>) {
-        re = src[2 * i];
-        im = src[2 * i + 1];
-        if (!is_finite(re) || !is_finite(im)) return Status::kInvalidInput;
-      } else {
-        re = static_cast<float>(src[2 * i]) * kInt16ToFloat;
-        im = static_cast<float>(src[2 * i + 1]) * kInt16ToFloat;
+    if constexpr (std::is_same_v<Sample, float>) {
+      // One flag for the whole profile instead of an exit per sample, so the
+      // copy vectorises; a bad profile is still refused before compress().
+      bool finite = true;
+      for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
+        const float re = src[2 * i];
+        const float im = src[2 * i + 1];
+        finite = finite & is_finite(re) & is_finite(im);
+        buf_re_[i] = re;
+        buf_im_[i] = im;
       }
-      buf_re_[i] = re;
-      buf_im_[i] = im;
+      if (!finite) return Status::kInvalidInput;
+    } else {
+      for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
+        buf_re_[i] = static_cast<float>(src[2 * i]) * kInt16ToFloat;
+        buf_im_[i] = static_cast<float>(src[2 * i + 1]) * kInt16ToFloat;
+      }
     }
     zero_tail();
     if (remove_dc_) subtract_mean();

@@ -38,7 +38,7 @@
 //
 // Memory (sizeof as built, EIGEN_DONT_VECTORIZE): x86-64 float/SmallBoardCaps
 // 51 336 B, float/DefaultCaps 293 536 B, double/DefaultCaps 546 768 B;
-// Cortex-M7 float 51 168 B and 293 312 B (bench/footprint.json). The largest
+// Cortex-M7 float 51 168 B and 293 312 B (docs/results/bench/footprint.json). The largest
 // parts: per-track window beliefs, the stored scans, the BP messages and the
 // output queue.
 //
