@@ -24,6 +24,7 @@
 #include "mptrack/status.h"
 #include "mptrack/validate.h"
 #include "mptrack/vmp/vmp_tracker.h"
+#include "mptrack/seaclutter/sea_detector.h"
 
 namespace mptrack {
 
@@ -87,6 +88,11 @@ template struct GnnParams<float>;
 template struct MfbpParams<float>;
 template struct RfsFilterParams<float>;
 template struct MultipathParams<float>;
+
+// Sea-clutter detection chain (seed 003): map, CFAR, DBSCAN, patches
+template class seaclutter::SeaDetector<seaclutter::SeaClutterCaps>;
+template Status seaclutter::SeaDetector<seaclutter::SeaClutterCaps>::to_scan(
+    std::uint64_t, Scan<float, DefaultCaps::kMaxMeasurements>&) const;
 
 static_assert(caps_are_valid<DefaultCaps>());
 static_assert(caps_are_valid<SmallBoardCaps>());
