@@ -1,8 +1,7 @@
 // `mptrack-sim dataset`: classifier training data from the seed 003 sea
 // scenes (docs/algorithms/sea_clutter.md §Dataset).
-#include <sys/stat.h>
-
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "cli/commands.h"
@@ -18,6 +17,7 @@ struct DatasetArgs {
   std::uint32_t runs = 4, run_offset = 0;
   std::uint64_t seed = 3;
   double pfa = 0.28;
+  double scr = -1000.0;  ///< --scr: one SCR for every target (overrides the sweep)
   std::string out;
 };
 
@@ -27,8 +27,9 @@ int run_dataset(const DatasetArgs& a) {
     std::fprintf(stderr, "error: unknown sea scenario '%s' (seed003-sea-a, seed003-sea-b)\n", a.scenario.c_str());
     return 2;
   }
-  c.scr_min_db = a.scr_min;
-  c.scr_max_db = a.scr_max;
+  const bool one_scr = a.scr > -999.0;
+  c.scr_min_db = one_scr ? a.scr : a.scr_min;
+  c.scr_max_db = one_scr ? a.scr : a.scr_max;
   c.scr_step_db = a.scr_step;
   c.runs = a.runs;
   c.run_offset = a.run_offset;
@@ -36,8 +37,7 @@ int run_dataset(const DatasetArgs& a) {
   c.detector = sea::detector_params_for(c.scenario);
   c.detector.cfar.pfa = a.pfa;
   c.out_dir = a.out.empty() ? "out/dataset-" + a.scenario : a.out;
-  ::mkdir("out", 0755);
-  ::mkdir(c.out_dir.c_str(), 0755);
+  std::filesystem::create_directories(c.out_dir);
   const sea::DatasetCounts n = sea::build_dataset(c);
   std::printf("%s: %llu scenes, %llu scans, %llu plots (%llu target, %llu clutter), targets detected %llu / %llu,"
               " scans at the plot cap %llu (clusters %llu, CFAR cells %llu) -> %s\n",
@@ -60,6 +60,7 @@ Subcommand add_dataset_command(CLI::App& app) {
   cmd->add_option("--scr-min", args->scr_min, "lowest SCR [dB]");
   cmd->add_option("--scr-max", args->scr_max, "highest SCR [dB]");
   cmd->add_option("--scr-step", args->scr_step, "SCR step [dB]");
+  cmd->add_option("--scr", args->scr, "every target's SCR [dB] (one level instead of the sweep)");
   cmd->add_option("--runs", args->runs, "scenes per SCR");
   cmd->add_option("--run-offset", args->run_offset, "first run index (held-out sets: e.g. 1000)");
   cmd->add_option("--seed", args->seed, "master seed");
