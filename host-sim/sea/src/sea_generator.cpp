@@ -104,7 +104,8 @@ void SeaSceneGenerator::step_texture(std::uint32_t scan) {
 // Speckle of each range bin: a unit-power complex Gaussian sequence with a
 // Gaussian Doppler spectrum S(f) ~ exp(-(f - f0)^2 / (2 sigma^2)) (wrapped at
 // +-PRF/2), drawn in the frequency domain (X_b = sqrt(S_b) CN(0, 1)) and
-// inverse transformed; then x = sqrt(P_c tau) s + n (eq. (1)).
+// inverse transformed; then x = sqrt(P_c tau) s + n
+// (docs/algorithms/sea_clutter.md eqs. (1), (3)).
 void SeaSceneGenerator::synthesize_clutter(SeaScan& out, double time_s) {
   const std::size_t n_p = sc_.pulses;
   const double pc = mptrack::dmath::dexp(sc_.cnr_db / 10.0 * 2.302585092994046);
