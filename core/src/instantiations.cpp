@@ -26,6 +26,7 @@
 #include "mptrack/validate.h"
 #include "mptrack/vmp/vmp_tracker.h"
 #include "mptrack/frontend/cfar_line.h"
+#include "mptrack/seaclutter/sea_detector.h"
 
 namespace mptrack {
 
@@ -94,6 +95,11 @@ template struct GnnParams<float>;
 template struct MfbpParams<float>;
 template struct RfsFilterParams<float>;
 template struct MultipathParams<float>;
+
+// Sea-clutter detection chain (seed 003): map, CFAR, DBSCAN, patches
+template class seaclutter::SeaDetector<seaclutter::SeaClutterCaps>;
+template Status seaclutter::SeaDetector<seaclutter::SeaClutterCaps>::to_scan(
+    std::uint64_t, Scan<float, DefaultCaps::kMaxMeasurements>&) const;
 
 static_assert(caps_are_valid<DefaultCaps>());
 static_assert(caps_are_valid<SmallBoardCaps>());

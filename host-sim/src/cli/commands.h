@@ -60,6 +60,7 @@ Subcommand add_demo_command(CLI::App& app);
 Subcommand add_table5_command(CLI::App& app);
 Subcommand add_compare_command(CLI::App& app);
 Subcommand add_scenario_export_command(CLI::App& app);
+Subcommand add_dataset_command(CLI::App& app);  // cmd_dataset.cpp (seed 003 sea clutter)
 
 // Shared by several commands (cli_common.cpp).
 /// Help text of --mfbp-param (the same on every command that takes it).
