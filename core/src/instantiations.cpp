@@ -6,6 +6,8 @@
 // of this library.
 #include "mptrack/caps.h"
 #include "mptrack/cbmember/cbmember_filter.h"
+#include "mptrack/classify/ds_fusion.h"
+#include "mptrack/classify/sea_classifier.h"
 #include "mptrack/frontend/front_end.h"
 #include "mptrack/frontend/mimo_spectrum.h"
 #include "mptrack/model/mimo_atom.h"
@@ -91,5 +93,21 @@ template struct MultipathParams<float>;
 static_assert(caps_are_valid<DefaultCaps>());
 static_assert(caps_are_valid<SmallBoardCaps>());
 static_assert(caps_are_valid<LargeCaps>());
+
+// seed 003 patch classifier (float only) and the DS fusion
+template void classify::conv_relu_pool<1, classify::kPatchRange, classify::kPatchDoppler, classify::kConv1Out,
+                                       classify::kConv1Kh, classify::kConv1Kw, 1, 4>(const float*, const float*,
+                                                                                     const float*, float*);
+template float classify::ds_normalized_product<float>(float, float);
+template float classify::ds_discounted_betp<float>(float, float, float);
+template float classify::correct_training_prior<float>(float, float);
+template float classify::clutter_log_factor<float>(float, float);
+/// Keeps the non-template SeaClassifier's code in this object for the nm check.
+Status classify_instantiation_probe(classify::SeaClassifier& c, const float* patch, classify::Features& f);
+Status classify_instantiation_probe(classify::SeaClassifier& c, const float* patch, classify::Features& f) {
+  const Status s = c.features(patch, f);
+  f[0] = c.target_probability(f, 0.5f);
+  return s;
+}
 
 }  // namespace mptrack
