@@ -21,6 +21,7 @@
 #include "mptrack/metrics/ospa.h"
 #include "mptrack/phd/phd_filter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
+#include "mptrack/mfbp/nemp.h"
 #include "mptrack/multipath/multipath_tracker.h"
 #include "mptrack/static_vector.h"
 #include "mptrack/status.h"
@@ -109,5 +110,8 @@ Status classify_instantiation_probe(classify::SeaClassifier& c, const float* pat
   f[0] = c.target_probability(f, 0.5f);
   return s;
 }
+
+// NEMP state of MF-BP's association (seed 003), float on targets
+template class mfbp::NempState<float, DefaultCaps>;
 
 }  // namespace mptrack
