@@ -6,6 +6,8 @@
 // of this library.
 #include "mptrack/caps.h"
 #include "mptrack/cbmember/cbmember_filter.h"
+#include "mptrack/classify/ds_fusion.h"
+#include "mptrack/classify/sea_classifier.h"
 #include "mptrack/frontend/front_end.h"
 #include "mptrack/frontend/mimo_spectrum.h"
 #include "mptrack/model/mimo_atom.h"
@@ -19,6 +21,7 @@
 #include "mptrack/metrics/ospa.h"
 #include "mptrack/phd/phd_filter.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
+#include "mptrack/mfbp/nemp.h"
 #include "mptrack/multipath/multipath_tracker.h"
 #include "mptrack/mptf/mptf_tracker.h"
 #include "mptrack/static_vector.h"
@@ -113,5 +116,24 @@ std::size_t frontend_cfar_line_instance(const frontend::Cfar& c, const float* li
                                         frontend::CfarResult* out) {
   return frontend::cfar_line(c, line, len, out);
 }
+
+// seed 003 patch classifier (float only) and the DS fusion
+template void classify::conv_relu_pool<1, classify::kPatchRange, classify::kPatchDoppler, classify::kConv1Out,
+                                       classify::kConv1Kh, classify::kConv1Kw, 1, 4>(const float*, const float*,
+                                                                                     const float*, float*);
+template float classify::ds_normalized_product<float>(float, float);
+template float classify::ds_discounted_betp<float>(float, float, float);
+template float classify::correct_training_prior<float>(float, float);
+template float classify::clutter_log_factor<float>(float, float);
+/// Keeps the non-template SeaClassifier's code in this object for the nm check.
+Status classify_instantiation_probe(classify::SeaClassifier& c, const float* patch, classify::Features& f);
+Status classify_instantiation_probe(classify::SeaClassifier& c, const float* patch, classify::Features& f) {
+  const Status s = c.features(patch, f);
+  f[0] = c.target_probability(f, 0.5f);
+  return s;
+}
+
+// NEMP state of MF-BP's association (seed 003), float on targets
+template class mfbp::NempState<float, DefaultCaps>;
 
 }  // namespace mptrack

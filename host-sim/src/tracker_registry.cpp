@@ -44,6 +44,8 @@ constexpr Entry kEntries[] = {
     {"vmp", "raw-ADC scenarios only: seed 004 VMP tracker on the raw MIMO frames (no detector)"},
     {"sbl-gnn", "raw-ADC scenarios only: SBL detector + GNN + CV Kalman (seed 004 detect-then-track baseline)"},
     {"oracle", "test oracle: reports each target-originated measurement as a track (uses truth)"},
+    {"mfbp-nn", "seed 003 sea scenes only: MF-BP after removing detections the patch classifier calls clutter"},
+    {"nemp", "seed 003 sea scenes only: MF-BP with the patch classifier fused into BP (NEMP)"},
 };
 
 }  // namespace
@@ -79,6 +81,7 @@ std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::strin
     if (name == "oracle") return make_oracle_tracker();
     if (name == "mfbp-multipath") return make_multipath_tracker();
     if (name == "mptf") return make_mptf_tracker();
+    if (name == "mfbp-nn" || name == "nemp") return make_nemp_tracker(name);
     if (name.rfind("mfbp", 0) == 0) return make_mfbp_tracker(name);
     if (name == "gnn") return make_gnn_tracker();
     if (name == "vmp") return make_vmp_adapter();

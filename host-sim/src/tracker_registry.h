@@ -33,6 +33,7 @@ std::unique_ptr<TrackerAdapter> make_tracker(const std::string& name, std::strin
 // Factories, one per adapter source file.
 std::unique_ptr<TrackerAdapter> make_oracle_tracker();
 std::unique_ptr<TrackerAdapter> make_mfbp_tracker(const std::string& variant);
+std::unique_ptr<TrackerAdapter> make_nemp_tracker(const std::string& variant);
 std::unique_ptr<TrackerAdapter> make_gnn_tracker();
 std::unique_ptr<TrackerAdapter> make_multipath_tracker();
 std::unique_ptr<TrackerAdapter> make_mptf_tracker();

@@ -85,6 +85,14 @@ class AssociationBp {
 
   void set_clutter_log(std::size_t tau, std::size_t j, T log_theta) { theta_c_[tau][j] = log_theta; }
   void set_clutter_absent(std::size_t tau, T theta0) { theta_c0_[tau] = theta0; }
+  /// Adds delta to every gated-in clutter log-evidence of measurement j
+  /// (before run()): a per-measurement factor e^delta on "j is clutter",
+  /// the NEMP message of docs/algorithms/nemp.md §NEMP loop.
+  void add_clutter_log(std::size_t j, T delta) {
+    for (std::size_t t = 0; t < nc_; ++t) {
+      if (theta_c_[t][j] > T(-1e29)) theta_c_[t][j] += delta;
+    }
+  }
 
   /// Runs damped loopy BP (docs/algorithms/mfbp.md §Evidence and association) and
   /// computes the beliefs.
@@ -113,6 +121,7 @@ class AssociationBp {
 
   std::size_t num_targets() const { return nt_; }
   std::size_t num_meas() const { return nm_; }
+  std::size_t num_sources() const { return nc_; }
   std::size_t edge_begin(std::size_t i) const { return edge_begin_[i]; }
   std::size_t edge_end(std::size_t i) const { return edge_end_[i]; }
   std::size_t edge_meas(std::size_t e) const { return edge_meas_[e]; }

@@ -22,6 +22,7 @@
 #include "mptrack/mfbp/evidence.h"
 #include "mptrack/mfbp/mfbp_caps.h"
 #include "mptrack/mfbp/model_constants.h"
+#include "mptrack/mfbp/nemp.h"
 #include "mptrack/mfbp/track_slot.h"
 #include "mptrack/mfbp/window_store.h"
 #include "mptrack/model/mahalanobis.h"
@@ -56,7 +57,8 @@ class Associator {
   /// first MP iteration of a window: the later ones drop the same pairs).
   T associate(std::size_t k, WindowStore<T, Caps>& store, Tracks& tracks,
               const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p, const ModelConstants<T>& mc,
-              TrackerCounters& counters, AssociationStats& stats, bool count_drops) {
+              TrackerCounters& counters, AssociationStats& stats, bool count_drops,
+              NempState<T, Caps>* nemp = nullptr) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kEvidence);
     Scan& s = store.win(k);
     const Sources src = clutter_sources(cl, p);
@@ -66,22 +68,29 @@ class Associator {
     // With Doppler every clutter source has a uniform radial-velocity
     // density 1 / (2 span) (our choice, docs/algorithms/mfbp.md §Departures).
     const T log_dop_clutter = s.doppler ? -dmath::dlog(T(2) * p.doppler_span_mps) : T(0);
-    if (p.clutter_mode == ClutterMode::kKnown) {
-      known_clutter_evidence(bp_, s, src, p, mc, log_dop_clutter);
-    } else {
-      estimated_clutter_evidence(bp_, s, k, src, cl, lambda, p, mc, log_dop_clutter);
-    }
+    clutter_evidence(k, s, src, cl, lambda, p, mc, log_dop_clutter);
+    if (nemp != nullptr) nemp->apply(k, s.count, bp_);
     compute_moments(k, s, tracks, p, mc, counters);
     TrackList bp_track{};
     std::uint64_t dropped = 0;
-    const std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, dropped);
+    std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, dropped);
     if (count_drops) counters.association_cap_hits += dropped;
 
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBp);
-    const auto res = bp_.run(p.bp_damping, p.bp_tolerance, p.bp_max_iterations);
-    if (!res.converged) ++counters.bp_not_converged;
-    stats.bp_iterations += res.iterations;
-    ++stats.bp_runs;
+    run_bp(p, counters, stats);
+    if (nemp != nullptr) {
+      // NEMP rounds (docs/algorithms/nemp.md §NEMP loop): fused clutter
+      // messages, then BP again on the same evidence; the moments and the
+      // dropped-pair count do not change.
+      for (std::size_t r = 0; r < nemp->params().rounds && nemp->update(k, s.count, bp_); ++r) {
+        (void)bp_.reset(s.count, src.count);
+        clutter_evidence(k, s, src, cl, lambda, p, mc, log_dop_clutter);
+        nemp->apply(k, s.count, bp_);
+        std::uint64_t dropped_again = 0;
+        nbt = add_targets(k, s, tracks, p, mc, bp_track, dropped_again);
+        run_bp(p, counters, stats);
+      }
+    }
     for (auto& t : tracks) {
       if (t.alive && k >= t.first && !t.participates(k)) t.forget_association(k);
     }
@@ -94,6 +103,22 @@ class Associator {
   }
 
  private:
+  void clutter_evidence(std::size_t k, const Scan& s, const Sources& src, const ClutterTable<T, Caps>& cl,
+                        T lambda, const MfbpParams<T>& p, const ModelConstants<T>& mc, T log_dop_clutter) {
+    if (p.clutter_mode == ClutterMode::kKnown) {
+      known_clutter_evidence(bp_, s, src, p, mc, log_dop_clutter);
+    } else {
+      estimated_clutter_evidence(bp_, s, k, src, cl, lambda, p, mc, log_dop_clutter);
+    }
+  }
+
+  void run_bp(const MfbpParams<T>& p, TrackerCounters& counters, AssociationStats& stats) {
+    const auto res = bp_.run(p.bp_damping, p.bp_tolerance, p.bp_max_iterations);
+    if (!res.converged) ++counters.bp_not_converged;
+    stats.bp_iterations += res.iterations;
+    ++stats.bp_runs;
+  }
+
   static void track_delta(T a, T b, T& delta) {
     const T dd = a > b ? a - b : b - a;
     delta = dd > delta ? dd : delta;

@@ -70,6 +70,7 @@
 #include "mptrack/mfbp/mfbp_caps.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/model_constants.h"
+#include "mptrack/mfbp/nemp.h"
 #include "mptrack/mfbp/reporting.h"
 #include "mptrack/mfbp/target_chain.h"
 #include "mptrack/mfbp/track_management.h"
@@ -162,7 +163,27 @@ class MfbpTracker {
   /// increase; kPartial if measurements were rejected (counted);
   /// kCapacityExceeded if an internal cap was hit (see the file comment;
   /// takes precedence over kPartial). Both are successes with losses.
-  Status step(const ScanType& scan) {
+  Status step(const ScanType& scan) { return step_with(scan, nullptr); }
+
+  /// NEMP (docs/algorithms/nemp.md): a caller-owned, initialised state whose
+  /// classifier evidence enters every association; nullptr detaches it.
+  /// Attach before the first scan (or after flush()): scans stored without
+  /// the state carry no evidence.
+  [[nodiscard]] Status attach_nemp(mfbp::NempState<T, Caps>* nemp) {
+    if (nemp != nullptr && !nemp->ready()) return Status::kNotInitialized;
+    nemp_ = nemp;
+    return Status::kOk;
+  }
+
+  /// step() with the classifier features of the scan's detections (indexed
+  /// like scan.measurements). kNotInitialized without an attached NEMP state.
+  Status step(const ScanType& scan, const mfbp::ScanEvidence<kMaxMeas>& evidence) {
+    if (nemp_ == nullptr) return Status::kNotInitialized;
+    return step_with(scan, &evidence);
+  }
+
+ private:
+  Status step_with(const ScanType& scan, const mfbp::ScanEvidence<kMaxMeas>* evidence) {
     outputs_.clear();  // tracker_contract.h rule 1: a refused scan finalises nothing
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
     const std::uint64_t caps_before = total_cap_hits(counters_);
@@ -175,6 +196,7 @@ class MfbpTracker {
     MPTRACK_PROFILE_STEP(g_mfbp);
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kInput);
     const bool partial = store_.store_scan(scan, params_, counters_, kept_);
+    if (nemp_ != nullptr) nemp_->store_scan(store_.n_win(), store_.win(store_.n_win()), evidence);
     // "No information" association for the tracks on this new scan.
     for (auto& t : tracks_) {
       if (t.alive) t.open_scan(store_.n_win());
@@ -184,6 +206,7 @@ class MfbpTracker {
     return accepted_status(counters_, caps_before, partial);
   }
 
+ public:
   /// End of data: processes and finalises every scan still held back.
   Status flush() {
     if (!initialized_) return Status::kNotInitialized;
@@ -235,7 +258,7 @@ class MfbpTracker {
       T delta = T(0);
       for (std::size_t k = 0; k < n; ++k) {
         const T d = associator_.associate(k, store_, tracks_, clutter_, params_, model_, counters_,
-                                          assoc_stats_, l == 0);
+                                          assoc_stats_, l == 0, nemp_);
         delta = d > delta ? d : delta;
       }
       mf_sweep(n);
@@ -305,6 +328,7 @@ class MfbpTracker {
     }
     if (params_.clutter_mode != ClutterMode::kKnown) clutter_.shift(fc, n);
     store_.shift(fc, params_.window_length);
+    if (nemp_ != nullptr) nemp_->shift(fc, n);
   }
 
   // ----------------------------------------------------------------- state
@@ -326,6 +350,7 @@ class MfbpTracker {
   std::uint64_t finalized_ = 0;
   ScanClock clock_{};
   std::array<bool, kMaxMeas> kept_{};  ///< store_scan: input measurement j kept (duplicate rule)
+  mfbp::NempState<T, Caps>* nemp_ = nullptr;  ///< attach_nemp(); not owned
 };
 
 }  // namespace mptrack

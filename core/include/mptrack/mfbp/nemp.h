@@ -1,0 +1,157 @@
+// Neural enhanced message passing (seed 003 section III-F, Algorithm 1
+// lines 15-24; docs/algorithms/nemp.md §NEMP loop) in MF-BP's association.
+//
+// Per detection j of a window scan the state keeps the classifier features
+// h_j (computed once, when the scan arrives) and the log factor L_j that
+// currently multiplies every clutter evidence of j (the NEMP message on
+// a_0j, seed 003 eqs. (24)-(25) mapped to ratio-form BP). One NEMP round,
+// after a BP run:
+//   1. extrinsic tracker belief: the clutter posterior of j with its own
+//      factor e^{L_j} divided out (no double counting over rounds and MP
+//      iterations), p_FG = P(target-originated) (the polarity fix);
+//   2. w_j = g_c(h_j, p_FG), corrected for the training prior;
+//   3. BetP_j = DS(p_FG, w_j) (optionally discounted);
+//   4. L_j = ln odds(p_FG) - ln odds(BetP_j), so the next BP's posterior of
+//      j is BetP_j given the same extrinsic messages.
+// A detection without a patch keeps L_j = 0 (w = 0.5, the neutral element),
+// and L_j = 0 is never applied, so with no evidence MF-BP runs the exact
+// operations it runs without NEMP.
+//
+// The state is owned by the caller (static storage on a board) and attached
+// to the tracker with MfbpTracker::attach_nemp(); the tracker does not grow.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "mptrack/classify/ds_fusion.h"
+#include "mptrack/classify/sea_classifier.h"
+#include "mptrack/math/detmath.h"
+#include "mptrack/status.h"
+
+namespace mptrack::mfbp {
+
+/// Upper bound of NempParams::rounds (each round is one more BP run per
+/// association).
+inline constexpr std::size_t kMaxNempRounds = 8;
+
+template <class T>
+struct NempParams {
+  /// NEMP rounds T per association (1..kMaxNempRounds); each reruns BP
+  /// with the fused clutter messages.
+  std::size_t rounds = 2;
+  /// Reliability alpha of the classifier in the DS fusion, in [0, 1]
+  /// (1 = the paper's plain Dempster rule).
+  T nn_reliability = T(1);
+};
+
+template <class T>
+[[nodiscard]] Status validate(const NempParams<T>& p) {
+  if (p.rounds < 1 || p.rounds > kMaxNempRounds) return Status::kInvalidArgument;
+  if (!(p.nn_reliability >= T(0) && p.nn_reliability <= T(1))) return Status::kInvalidArgument;
+  return Status::kOk;
+}
+
+/// Per-detection evidence passed with a scan, indexed like the scan's
+/// measurements: features of detections with a patch.
+template <std::size_t N>
+struct ScanEvidence {
+  std::array<classify::Features, N> features{};
+  std::array<bool, N> has_patch{};
+};
+
+template <class T, class Caps>
+class NempState {
+ public:
+  static constexpr std::size_t kMaxMeas = Caps::kMaxMeasurements;
+  static constexpr std::size_t kMaxWindow = Caps::kMaxWindow;
+  using Evidence = ScanEvidence<kMaxMeas>;
+
+  /// Binds a ready classifier (kept by pointer) and validated params.
+  [[nodiscard]] Status init(const classify::SeaClassifier* classifier, const NempParams<T>& p) {
+    if (classifier == nullptr || !classifier->ready()) return Status::kNotInitialized;
+    const Status s = validate(p);
+    if (s != Status::kOk) return s;
+    classifier_ = classifier;
+    params_ = p;
+    prior_ = classifier->weights().train_target_fraction;
+    return Status::kOk;
+  }
+
+  bool ready() const { return classifier_ != nullptr; }
+  const NempParams<T>& params() const { return params_; }
+
+  /// Evidence of the scan just stored at window index k: stored measurement
+  /// c is input measurement orig_index[c]. ev == nullptr: no patches.
+  template <class Slot>
+  void store_scan(std::size_t k, const Slot& s, const Evidence* ev) {
+    for (std::size_t c = 0; c < s.count; ++c) {
+      const std::size_t j = s.orig_index[c];
+      has_[k][c] = ev != nullptr && ev->has_patch[j];
+      features_[k][c] = ev != nullptr ? ev->features[j] : classify::Features{};
+      log_factor_[k][c] = T(0);
+    }
+  }
+
+  /// The window slides by fc scans (MfbpTracker::shift_window).
+  void shift(std::size_t fc, std::size_t n) {
+    for (std::size_t k = fc; k < n; ++k) {
+      has_[k - fc] = has_[k];
+      features_[k - fc] = features_[k];
+      log_factor_[k - fc] = log_factor_[k];
+    }
+  }
+
+  /// Multiplies the clutter evidence of each detection of scan k by its
+  /// NEMP factor (log domain, before bp.run()); factors of 0 are skipped.
+  template <class Bp>
+  void apply(std::size_t k, std::size_t count, Bp& bp) const {
+    for (std::size_t j = 0; j < count; ++j) {
+      if (log_factor_[k][j] != T(0)) bp.add_clutter_log(j, log_factor_[k][j]);
+    }
+  }
+
+  /// One NEMP round from the beliefs of a finished BP run on scan k (file
+  /// comment, steps 1-4). Returns whether any factor changed (else another
+  /// BP run would repeat this one).
+  template <class Bp>
+  bool update(std::size_t k, std::size_t count, const Bp& bp) {
+    bool changed = false;
+    for (std::size_t j = 0; j < count; ++j) {
+      if (!has_[k][j]) continue;
+      const T p_fg = extrinsic_target_belief(bp, j, log_factor_[k][j]);
+      const float w_raw = classifier_->target_probability(features_[k][j], static_cast<float>(p_fg));
+      const T w = static_cast<T>(classify::correct_training_prior(w_raw, prior_));
+      const T betp = classify::ds_discounted_betp(p_fg, w, params_.nn_reliability);
+      const T l = classify::clutter_log_factor(p_fg, betp);
+      changed = changed || l != log_factor_[k][j];
+      log_factor_[k][j] = l;
+    }
+    return changed;
+  }
+
+  /// The NEMP factor of stored detection c of window scan k (tests, reports).
+  T log_factor(std::size_t k, std::size_t c) const { return log_factor_[k][c]; }
+
+  /// The tracker's P(target-originated) of detection j without its own
+  /// NEMP factor: clutter log-odds of the posterior minus L_j.
+  template <class Bp>
+  static T extrinsic_target_belief(const Bp& bp, std::size_t j, T log_factor) {
+    T pc = T(0);
+    for (std::size_t tau = 0; tau < bp.num_sources(); ++tau) pc += bp.clutter_belief(tau, j);
+    pc = classify::clamp_probability(pc);
+    const T clutter_log_odds = (dmath::dlog(pc) - dmath::dlog1p(-pc)) - log_factor;
+    return T(1) / (T(1) + dmath::dexp(clutter_log_odds));
+  }
+
+ private:
+  const classify::SeaClassifier* classifier_ = nullptr;
+  NempParams<T> params_{};
+  float prior_ = 0.5f;
+  std::array<std::array<bool, kMaxMeas>, kMaxWindow> has_{};
+  std::array<std::array<classify::Features, kMaxMeas>, kMaxWindow> features_{};
+  std::array<std::array<T, kMaxMeas>, kMaxWindow> log_factor_{};
+};
+
+}  // namespace mptrack::mfbp

@@ -1,0 +1,253 @@
+// NEMP in MF-BP's association (core/include/mptrack/mfbp/nemp.h and the hook
+// in mfbp/association.h): neutrality (bit-identical MF-BP with no evidence or
+// w = 0.5 everywhere), the extrinsic belief and the fused message by hand,
+// parameter validation, no allocation.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "alloc_guard.h"
+#include "classify_reference_data.h"
+#include "mfbp_scenario.h"
+#include "mptrack/mfbp/mfbp_tracker.h"
+
+using namespace mptrack;
+using mfbp_test::TestCaps;
+
+namespace {
+
+using Tracker = MfbpTracker<float, TestCaps>;
+using Nemp = mfbp::NempState<float, TestCaps>;
+using Evidence = mfbp::ScanEvidence<TestCaps::kMaxMeasurements>;
+using TestScan = Scan<float, TestCaps::kMaxMeasurements>;
+
+constexpr float kZeros[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+
+/// The reference weights with a constant classifier head: w = sigmoid(bias)
+/// whatever the features and belief (sigmoid(0) = 1 / (1 + dexp(-0)) = 0.5
+/// exactly).
+struct ConstantHead {
+  float bias[1];
+  classify::SeaClassifier classifier;
+  explicit ConstantHead(float b) : bias{b} {
+    classify::SeaClassifierWeights w = test::classify_ref::weights();
+    w.mlp3_weight = kZeros;
+    w.mlp3_bias = bias;
+    REQUIRE(classifier.init(w) == Status::kOk);
+  }
+};
+
+void put_bits(std::vector<std::uint32_t>& out, float v) {
+  std::uint32_t u = 0;
+  std::memcpy(&u, &v, sizeof u);
+  out.push_back(u);
+}
+
+void record(const Tracker& trk, std::vector<std::uint32_t>& out) {
+  for (const auto& est : trk.outputs()) {
+    out.push_back(static_cast<std::uint32_t>(est.scan_index));
+    out.push_back(static_cast<std::uint32_t>(est.tracks.size()));
+    for (const auto& t : est.tracks) {
+      out.push_back(t.id);
+      for (int i = 0; i < 4; ++i) put_bits(out, t.state(i));
+      for (int i = 0; i < 4; ++i) put_bits(out, t.covariance(i, i));
+      put_bits(out, t.existence);
+      put_bits(out, t.snr);
+      out.push_back(static_cast<std::uint32_t>(t.measurement_index));
+    }
+    for (const auto& c : est.clutter) {
+      put_bits(out, c.expected_count);
+      put_bits(out, c.cnr);
+    }
+  }
+}
+
+struct RunResult {
+  std::vector<std::uint32_t> bits;
+  std::uint64_t bp_runs = 0;
+};
+
+/// 30 scans of the seed 000 two-target scene (tests/unit/mfbp_scenario.h),
+/// window 7 / slide 3; nemp == nullptr: plain MF-BP; with_patches: every
+/// detection carries (zero) features.
+RunResult run_scene(Nemp* nemp, bool with_patches) {
+  auto trk = std::make_unique<Tracker>();
+  MfbpParams<float> p = seed000_default_params<float>();
+  p.window_length = 7;
+  p.slide = 3;
+  p.uniform_rate_per_scan = 10.0f;
+  REQUIRE(trk->init(p) == Status::kOk);
+  if (nemp != nullptr) REQUIRE(trk->attach_nemp(nemp) == Status::kOk);
+  auto ev = std::make_unique<Evidence>();
+  ev->has_patch.fill(with_patches);
+  mfbp_test::Lcg rng;
+  auto scan = std::make_unique<TestScan>();
+  RunResult r;
+  for (int k = 0; k < 30; ++k) {
+    mfbp_test::make_scan(rng, k, 10, *scan);
+    const Status s = nemp != nullptr ? trk->step(*scan, *ev) : trk->step(*scan);
+    REQUIRE(s == Status::kOk);
+    record(*trk, r.bits);
+  }
+  REQUIRE(trk->flush() == Status::kOk);
+  record(*trk, r.bits);
+  r.bp_runs = trk->bp_runs();
+  return r;
+}
+
+/// A BP stand-in: one clutter source whose posterior is given.
+struct FakeBp {
+  float pc[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+  float added[4] = {0, 0, 0, 0};
+  std::size_t num_sources() const { return 1; }
+  float clutter_belief(std::size_t, std::size_t j) const { return pc[j]; }
+  void add_clutter_log(std::size_t j, float d) { added[j] += d; }
+};
+
+/// A window store slot with count detections, stored in input order.
+struct FakeSlot {
+  std::size_t count = 1;
+  std::array<std::uint16_t, TestCaps::kMaxMeasurements> orig_index{};
+};
+
+}  // namespace
+
+TEST_CASE("NEMP off, no patches, or w = 0.5 everywhere: MF-BP output bit-identical") {
+  const RunResult plain = run_scene(nullptr, false);
+  REQUIRE(plain.bits.size() > 100u);  // tracks were reported
+  auto neutral = std::make_unique<ConstantHead>(0.0f);
+  CHECK(neutral->classifier.target_probability(classify::Features{}, 0.3f) == 0.5f);
+  auto nemp = std::make_unique<Nemp>();
+  REQUIRE(nemp->init(&neutral->classifier, mfbp::NempParams<float>{}) == Status::kOk);
+  const RunResult no_patch = run_scene(nemp.get(), false);
+  const RunResult half = run_scene(nemp.get(), true);
+  CHECK(no_patch.bits == plain.bits);
+  CHECK(half.bits == plain.bits);
+  // and no extra BP runs: a round that changes no factor stops the loop
+  CHECK(no_patch.bp_runs == plain.bp_runs);
+  CHECK(half.bp_runs == plain.bp_runs);
+}
+
+TEST_CASE("NEMP with a non-neutral classifier changes the association") {
+  const RunResult plain = run_scene(nullptr, false);
+  auto clutterish = std::make_unique<ConstantHead>(-3.0f);  // w = 0.047 for every detection
+  auto nemp = std::make_unique<Nemp>();
+  REQUIRE(nemp->init(&clutterish->classifier, mfbp::NempParams<float>{}) == Status::kOk);
+  const RunResult fused = run_scene(nemp.get(), true);
+  CHECK(fused.bits != plain.bits);
+  CHECK(fused.bp_runs > plain.bp_runs);
+}
+
+TEST_CASE("NEMP: extrinsic belief divides the detection's own factor out") {
+  // posterior clutter 0.2 with factor e^L, L = ln 3 applied: extrinsic
+  // clutter odds 0.25 / 3 -> p_FG = 1 / (1 + 1/12) = 12/13.
+  FakeBp bp;
+  bp.pc[0] = 0.2f;
+  const float p = Nemp::extrinsic_target_belief(bp, 0, std::log(3.0f));
+  CHECK(p == doctest::Approx(12.0 / 13.0).epsilon(1e-6));
+}
+
+TEST_CASE("NEMP: one round by hand, and no double counting at the fixed point") {
+  // w = sigmoid(ln 9) = 0.9, p_FG = 0.5 (posterior 0.5, no factor yet):
+  // BetP = 0.45 / (0.45 + 0.05) = 0.9, L = ln odds(0.5) - ln odds(0.9) = -ln 9.
+  auto head = std::make_unique<ConstantHead>(std::log(9.0f));
+  auto nemp = std::make_unique<Nemp>();
+  REQUIRE(nemp->init(&head->classifier, mfbp::NempParams<float>{}) == Status::kOk);
+  auto ev = std::make_unique<Evidence>();
+  ev->has_patch[0] = true;
+  FakeSlot slot;
+  nemp->store_scan(0, slot, ev.get());
+  FakeBp bp;
+  CHECK(nemp->update(0, 1, bp));
+  CHECK(nemp->log_factor(0, 0) == doctest::Approx(-std::log(9.0)).epsilon(1e-5));
+  // The next BP sees the factor: its posterior is BetP = 0.9. The extrinsic
+  // belief is 0.5 again, so the factor stays -ln 9 (a full-belief loop would
+  // fuse 0.9 with 0.9 and go to -2 ln 9).
+  bp.pc[0] = 0.1f;
+  nemp->update(0, 1, bp);
+  CHECK(nemp->log_factor(0, 0) == doctest::Approx(-std::log(9.0)).epsilon(1e-4));
+  // apply() adds it to the clutter evidence
+  FakeBp target;
+  nemp->apply(0, 1, target);
+  CHECK(target.added[0] == nemp->log_factor(0, 0));
+}
+
+TEST_CASE("NEMP: a detection without a patch keeps a zero factor and is never applied") {
+  auto head = std::make_unique<ConstantHead>(2.0f);
+  auto nemp = std::make_unique<Nemp>();
+  REQUIRE(nemp->init(&head->classifier, mfbp::NempParams<float>{}) == Status::kOk);
+  FakeSlot slot;
+  slot.count = 2;
+  slot.orig_index[0] = 1;  // stored 0 is input 1 (no patch), stored 1 is input 0
+  slot.orig_index[1] = 0;
+  auto ev = std::make_unique<Evidence>();
+  ev->has_patch[0] = true;
+  nemp->store_scan(0, slot, ev.get());
+  FakeBp bp;
+  CHECK(nemp->update(0, 2, bp));
+  CHECK(nemp->log_factor(0, 0) == 0.0f);
+  CHECK(nemp->log_factor(0, 1) < 0.0f);
+  FakeBp target;
+  target.added[0] = 7.0f;
+  nemp->apply(0, 2, target);
+  CHECK(target.added[0] == 7.0f);
+}
+
+TEST_CASE("NEMP params are validated; the tracker refuses evidence without a state") {
+  CHECK(mfbp::validate(mfbp::NempParams<float>{}) == Status::kOk);
+  mfbp::NempParams<float> p;
+  p.rounds = 0;
+  CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  p.rounds = mfbp::kMaxNempRounds + 1;
+  CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  p.rounds = 1;
+  p.nn_reliability = 1.5f;
+  CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  auto nemp = std::make_unique<Nemp>();
+  classify::SeaClassifier unready;
+  CHECK(nemp->init(&unready, mfbp::NempParams<float>{}) == Status::kNotInitialized);
+  CHECK(nemp->init(nullptr, mfbp::NempParams<float>{}) == Status::kNotInitialized);
+  auto trk = std::make_unique<Tracker>();
+  REQUIRE(trk->init(seed000_default_params<float>()) == Status::kOk);
+  CHECK(trk->attach_nemp(nemp.get()) == Status::kNotInitialized);
+  auto scan = std::make_unique<TestScan>();
+  auto ev = std::make_unique<Evidence>();
+  mfbp_test::Lcg rng;
+  mfbp_test::make_scan(rng, 0, 10, *scan);
+  CHECK(trk->step(*scan, *ev) == Status::kNotInitialized);
+}
+
+TEST_CASE("NEMP: classifier features and NEMP association allocate nothing") {
+  auto head = std::make_unique<ConstantHead>(-1.0f);
+  auto nemp = std::make_unique<Nemp>();
+  REQUIRE(nemp->init(&head->classifier, mfbp::NempParams<float>{}) == Status::kOk);
+  auto trk = std::make_unique<Tracker>();
+  MfbpParams<float> p = seed000_default_params<float>();
+  p.uniform_rate_per_scan = 10.0f;
+  REQUIRE(trk->init(p) == Status::kOk);
+  REQUIRE(trk->attach_nemp(nemp.get()) == Status::kOk);
+  auto ev = std::make_unique<Evidence>();
+  auto scan = std::make_unique<TestScan>();
+  auto patch = std::make_unique<std::array<float, classify::kPatchSize>>();
+  for (std::size_t i = 0; i < classify::kPatchSize; ++i) (*patch)[i] = test::classify_ref::kPatch2[i];
+  mfbp_test::Lcg rng;
+  std::size_t allocs = 0;
+  for (int k = 0; k < 12; ++k) {
+    mfbp_test::make_scan(rng, k, 10, *scan);
+    test::NoAllocScope guard;
+    for (std::size_t j = 0; j < scan->measurements.size(); ++j) {
+      ev->has_patch[j] = head->classifier.features(patch->data(), ev->features[j]) == Status::kOk;
+    }
+    const Status s = trk->step(*scan, *ev);
+    allocs += guard.allocations();
+    CHECK(s == Status::kOk);
+  }
+  CHECK(allocs == 0u);
+  CHECK(trk->bp_runs() > 0u);
+}
