@@ -82,7 +82,7 @@ class MultipathMfbpTracker {
   /// Checks params (MultipathParams::validate) and num_paths against Caps::kMaxPaths.
   static Status validate(const Params& p, ParamError* where = nullptr) {
     MPTRACK_TRY(p.validate(where));
-    MPTRACK_CHECK_PARAM(where, "num_paths", check(p.num_paths <= kMaxPaths));
+    MPTRACK_CHECK_PARAM(where, "num_paths", check_at_most(p.num_paths, kMaxPaths, "kMaxPaths"));
     return Status::kOk;
   }
 
