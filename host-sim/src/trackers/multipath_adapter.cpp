@@ -39,7 +39,7 @@ class MultipathAdapter final : public CoreTrackerAdapter<Tracker> {
     for (const scenario::ClutterSpec& c : s.clutter) clutter += c.mean_count * setup.clutter_scale;
     p.clutter_mean_count = static_cast<float>(clutter > 1.0 ? clutter : 1.0);
     p.max_gap_s = static_cast<float>(4.0 * s.scan_period_s);
-    return init_tracker(p);
+    return init_tracker(p, "multipath");
   }
 };
 
