@@ -40,10 +40,17 @@ def metric_params(summary):
     return o.get("cutoff_m"), o.get("order_p")
 
 
+def xy_unit(truth, tracks):
+    """km for wide scenes, m for small ones (seed 004's drones span tens of metres)."""
+    v = [abs(float(r[k])) for r in truth + tracks for k in ("x", "y")]
+    return (1e3, "km") if v and max(v) > 2000.0 else (1.0, "m")
+
+
 def draw_xy(ax, truth, tracks):
+    scale, unit = xy_unit(truth, tracks)
     by_target = defaultdict(list)
     for r in truth:
-        by_target[r["target_id"]].append((int(r["scan"]), float(r["x"]) / 1e3, float(r["y"]) / 1e3))
+        by_target[r["target_id"]].append((int(r["scan"]), float(r["x"]) / scale, float(r["y"]) / scale))
     xs, ys = [], []
     for i, (tid, pts) in enumerate(sorted(by_target.items(), key=lambda kv: int(kv[0]))):
         pts.sort()
@@ -57,7 +64,7 @@ def draw_xy(ax, truth, tracks):
     by_track = defaultdict(list)
     for r in tracks:
         if r["confirmed"] == "1":
-            by_track[r["track_id"]].append((float(r["x"]) / 1e3, float(r["y"]) / 1e3))
+            by_track[r["track_id"]].append((float(r["x"]) / scale, float(r["y"]) / scale))
     cmap = plt.get_cmap("tab10")
     for i, (tid, pts) in enumerate(sorted(by_track.items(), key=lambda kv: int(kv[0]))):
         ax.plot([p[0] for p in pts], [p[1] for p in pts], ".", ms=3.5, color=cmap(i % 10),
@@ -67,14 +74,14 @@ def draw_xy(ax, truth, tracks):
     if xs:
         # Zoom to the data (truth and tracks), a margin of 8 %, equal aspect.
         x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
-        span = max(x1 - x0, y1 - y0, 0.05)
+        span = max(x1 - x0, y1 - y0, 0.05 if unit == "km" else 5.0)
         cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
         half = 0.54 * span
         ax.set_xlim(cx - half, cx + half)
         ax.set_ylim(cy - half, cy + half)
     ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel("x [km]")
-    ax.set_ylabel("y [km]")
+    ax.set_xlabel("x [%s]" % unit)
+    ax.set_ylabel("y [%s]" % unit)
     ax.grid(True, color="0.9")
     ax.set_title("run 0: truth and confirmed tracks (%d tracks)" % len(by_track), fontsize=10)
     ax.legend(loc="best", fontsize=8, framealpha=0.9)
@@ -91,8 +98,10 @@ def draw_ospa(ax, metrics, summary):
     if c is not None:
         ax.axhline(c, color="0.5", ls="--", lw=0.8, label="cutoff c = %g m" % c)
         top = max([float(r["ospa"]) for r in metrics] + mean + [0.0])
-        ax.set_ylim(0, max(top, 1e-9) * 1.15 if top < c else c * 1.08)
+        # Zoom to the data; an all-zero curve (the oracle) is drawn against c.
+        ax.set_ylim(0, c * 1.08 if (top <= 0.0 or top >= c) else top * 1.15)
     ax.set_xlabel("scan")
+    ax.xaxis.get_major_locator().set_params(integer=True)
     ax.set_ylabel("OSPA [m]")
     title = "OSPA of confirmed tracks"
     if c is not None:
@@ -110,6 +119,8 @@ def draw_cardinality(ax, metrics):
     ax.set_xlabel("scan")
     ax.set_ylabel("number of objects")
     ax.yaxis.get_major_locator().set_params(integer=True)
+    n = max([int(r["truths"]) for r in metrics] + [int(r["confirmed"]) for r in metrics] + [1])
+    ax.set_ylim(-0.3, n + 0.7)
     ax.set_title("cardinality over time", fontsize=10)
     ax.grid(True, color="0.9")
     ax.legend(loc="best", fontsize=8, framealpha=0.9)

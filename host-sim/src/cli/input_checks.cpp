@@ -26,7 +26,7 @@ CLI::Validator integer_in(std::uint64_t lo, std::uint64_t hi) {
         const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
         const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
         if (!digits || errno != 0 || *end != '\0' || v < lo || v > hi) {
-          return "= " + text + ": must be an integer in " + range;
+          return text + " is not an integer in " + range;
         }
         return "";
       },
@@ -41,7 +41,7 @@ CLI::Validator number_in(double lo, double hi, bool lo_open) {
         const double v = std::strtod(text.c_str(), &end);
         const bool parsed = !text.empty() && end != nullptr && *end == '\0';
         const bool ok = parsed && std::isfinite(v) && (lo_open ? v > lo : v >= lo) && v <= hi;
-        if (!ok) return "= " + text + ": must be a finite number in " + range;
+        if (!ok) return text + " is not a finite number in " + range;
         return "";
       },
       "NUMBER in " + range, "number_in");
