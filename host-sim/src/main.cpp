@@ -7,6 +7,7 @@
 //                                    the short seed000-s2 run)
 //   mptrack-sim --scenario seed004-drones|mimo-interference [--frames N --rate HZ]   raw-ADC path
 //   mptrack-sim scenario-export NAME FILE   write a built-in scenario as JSON
+//   mptrack-sim replay --detections FILE   recorded detections through one tracker (cmd_replay.cpp)
 //   mptrack-sim info                 build configuration and caps presets
 //   mptrack-sim dataset [options]    seed 003 classifier patches from the sea-clutter scenes
 #include <CLI/CLI.hpp>
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
   add_run_options(app, options);
   const std::vector<Subcommand> commands = {add_info_command(app), add_demo_command(app), add_table5_command(app),
                                             add_compare_command(app), add_scenario_export_command(app),
-                                            add_dataset_command(app)};
+                                            add_dataset_command(app), add_replay_command(app)};
   CLI11_PARSE(app, argc, argv);
   try {
     for (const Subcommand& c : commands) {

@@ -19,4 +19,8 @@ struct RunConfig : TrackerRunOptions {
 /// std::runtime_error on a bad configuration (unknown tracker, invalid spec).
 Summary run_monte_carlo(const RunConfig& config);
 
+/// The same loop and outputs on any scan source (replay of recorded
+/// detections: replay/replay_source.h); config.spec is unused.
+Summary run_on_source(ScanSource& source, const RunConfig& config);
+
 }  // namespace mptrack::sim

@@ -88,7 +88,8 @@ std::string xy_ellipse_path(const Frame& f, double mx, double my, double cxx, do
 
 void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
                     const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& estimates,
-                    const std::vector<double>& ospa_per_scan, const std::string& title) {
+                    const std::vector<double>& ospa_per_scan, const std::string& title, double order_p,
+                    double cutoff_m) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot write");
   constexpr double kW = 1200, kH = 560;
@@ -181,12 +182,13 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
           << "\" cy=\"" << f1(xy.sy(t.py / 1000.0)) << "\"/>\n";
     }
   }
-  out << "<text x=\"70\" y=\"68\">black: truth, dots: confirmed tracks (colour = id), dashed: true clutter "
-         "(2&#963;), orange: estimated clutter</text>\n";
+  // Two short lines: one line of 90 characters ran past the panel.
+  out << "<text x=\"70\" y=\"56\">black: truth, dots: confirmed tracks (colour = id)</text>\n"
+         "<text x=\"70\" y=\"70\">dashed: true clutter (2&#963;), orange: estimated clutter</text>\n";
 
   // ---- right panel: OSPA over time ----
   const double n = static_cast<double>(std::max<std::size_t>(ospa_per_scan.size(), 1));
-  double omax = 100.0;
+  double omax = 1e-3;  // scale to the data (at most c), not to a fixed 100 m
   for (double v : ospa_per_scan) omax = std::max(omax, v);
   const Frame os{1.0, std::max(n, 2.0), 0.0, omax * 1.05, 640, 50, 520, 470};
   out << "<rect x=\"640\" y=\"50\" width=\"520\" height=\"470\" fill=\"none\" stroke=\"#888\"/>\n";
@@ -203,7 +205,8 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
   }
   out << "<text x=\"900\" y=\"545\" text-anchor=\"middle\">scan (1 .. " << ospa_per_scan.size()
       << "); shaded: evaluation interval</text>\n"
-      << "<text x=\"650\" y=\"68\">OSPA [m] (p = 2, c = 631 m, the run's metric), mean over runs</text>\n</svg>\n";
+      << "<text x=\"650\" y=\"68\">OSPA [m] (p = " << order_p << ", c = " << cutoff_m
+      << " m, the run's metric), mean over runs</text>\n</svg>\n";
   if (!out) throw std::runtime_error(path + ": write failed");
 }
 

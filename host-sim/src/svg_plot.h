@@ -15,7 +15,8 @@ namespace mptrack::sim {
 
 void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
                     const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& estimates,
-                    const std::vector<double>& ospa_per_scan, const std::string& title);
+                    const std::vector<double>& ospa_per_scan, const std::string& title, double order_p = 2.0,
+                    double cutoff_m = 631.0);
 
 /// One line of the comparison plot: a tracker's mean OSPA per scan [m].
 struct OspaSeries {

@@ -43,7 +43,7 @@ constexpr Entry kEntries[] = {
     {"cbmember-ki", "CBMeMBer kinematics only (no amplitude), clutter map estimated"},
     {"vmp", "raw-ADC scenarios only: seed 004 VMP tracker on the raw MIMO frames (no detector)"},
     {"sbl-gnn", "raw-ADC scenarios only: SBL detector + GNN + CV Kalman (seed 004 detect-then-track baseline)"},
-    {"oracle", "test oracle: reports each target-originated measurement as a track (uses truth)"},
+    {"oracle", "test oracle: reports each target-originated measurement as a track (uses truth); raw-ADC scenarios: the true states (the ceiling, OSPA 0)"},
     {"mfbp-nn", "seed 003 sea scenes only: MF-BP after removing detections the patch classifier calls clutter"},
     {"nemp", "seed 003 sea scenes only: MF-BP with the patch classifier fused into BP (NEMP)"},
 };

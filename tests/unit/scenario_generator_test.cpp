@@ -236,7 +236,7 @@ TEST_CASE("generator: init rejects invalid specs and out-of-range scans") {
   s.targets[1].snr = -1.0;
   Generator g;
   CHECK(g.init(s, 1, 0) == Status::kInvalidArgument);
-  CHECK(g.error() == "targets[1].snr: expected a positive number");
+  CHECK(g.error() == "targets[1].snr = -1: must be in (0, 1e+12] (linear)");
   SimScan scan;
   CHECK(g.generate(1, scan) == Status::kInvalidArgument);  // not initialised
   s = builtin("seed000-s1");

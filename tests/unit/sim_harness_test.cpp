@@ -219,10 +219,9 @@ TEST_CASE("sim tracker init: a refused parameter is named with the rule it broke
   TrackerSetup setup;
   REQUIRE(sc::builtin_scenario("seed000-s1", setup.spec));
   setup.mfbp_params = {"window_length=100"};
-  CHECK(trk->init(setup) ==
-        "invalid tracker parameter window_length: needs check(p.window_length <= kMaxWindow)");
+  CHECK(trk->init(setup) == "mfbp.window_length = 100: must be <= 7 (Caps::kMaxWindow)");
   setup.mfbp_params = {"noise.range_std_m=-1"};
-  CHECK(trk->init(setup).rfind("invalid tracker parameter noise.range_std_m: needs ", 0) == 0);
+  CHECK(trk->init(setup) == "mfbp.noise.range_std_m = -1: must be in [0.001, 100000]");
   setup.mfbp_params = {"amplitude.use_amplitude=2"};
   CHECK(trk->init(setup) == "--mfbp-param amplitude.use_amplitude: expected 0 or 1, got '2'");
   setup.mfbp_params = {"process_noise_var=0.1"};  // the old name

@@ -106,7 +106,10 @@ TEST_CASE("AmplitudeModel: Swerling I / III give n = 1 / 2; bad fields are named
   CHECK(same(field_of(v), "amplitude.max_amplitude"));
   ParamError where;
   CHECK(a.validate(&where) == Status::kInvalidArgument);
-  CHECK(std::strstr(where.rule, "max_amplitude > threshold") != nullptr);
+  CHECK(std::strstr(where.rule, "max_amplitude, threshold") != nullptr);
+  CHECK(where.result.value == 0.5);  // the figures the harness prints
+  CHECK(where.result.lo == doctest::Approx(0.715));
+  CHECK(where.result.lo_open);
 }
 
 TEST_CASE("GNN validate: the motion noise is a variance; block fields carry the block name") {

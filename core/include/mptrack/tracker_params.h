@@ -75,10 +75,10 @@ struct PolarRegion {
     const T pi = dmath::kPi<T>;
     MPTRACK_CHECK_PARAM(where, "region.range_min_m", check_range(range_min_m, T(0), kMaxRegionCoordM<T>));
     MPTRACK_CHECK_PARAM(where, "region.range_max_m", check_range(range_max_m, T(0), kMaxRegionCoordM<T>));
-    MPTRACK_CHECK_PARAM(where, "region.range_max_m", check(range_max_m > range_min_m));
+    MPTRACK_CHECK_PARAM(where, "region.range_max_m", check_above(range_max_m, range_min_m, "range_min_m"));
     MPTRACK_CHECK_PARAM(where, "region.azimuth_min_rad", check_range(azimuth_min_rad, -pi, pi));
     MPTRACK_CHECK_PARAM(where, "region.azimuth_max_rad", check_range(azimuth_max_rad, -pi, pi));
-    MPTRACK_CHECK_PARAM(where, "region.azimuth_max_rad", check(azimuth_max_rad > azimuth_min_rad));
+    MPTRACK_CHECK_PARAM(where, "region.azimuth_max_rad", check_above(azimuth_max_rad, azimuth_min_rad, "azimuth_min_rad"));
     return Status::kOk;
   }
 };
@@ -103,10 +103,10 @@ struct CartesianRegion {
     const T c = kMaxRegionCoordM<T>;
     MPTRACK_CHECK_PARAM(where, "cartesian_region.x_min_m", check_range(x_min_m, -c, c));
     MPTRACK_CHECK_PARAM(where, "cartesian_region.x_max_m", check_range(x_max_m, -c, c));
-    MPTRACK_CHECK_PARAM(where, "cartesian_region.x_max_m", check(x_max_m > x_min_m));
+    MPTRACK_CHECK_PARAM(where, "cartesian_region.x_max_m", check_above(x_max_m, x_min_m, "x_min_m"));
     MPTRACK_CHECK_PARAM(where, "cartesian_region.y_min_m", check_range(y_min_m, -c, c));
     MPTRACK_CHECK_PARAM(where, "cartesian_region.y_max_m", check_range(y_max_m, -c, c));
-    MPTRACK_CHECK_PARAM(where, "cartesian_region.y_max_m", check(y_max_m > y_min_m));
+    MPTRACK_CHECK_PARAM(where, "cartesian_region.y_max_m", check_above(y_max_m, y_min_m, "y_min_m"));
     return Status::kOk;
   }
 };
@@ -157,9 +157,9 @@ struct AmplitudeModel {
 
   Status validate(ParamError* where) const {
     MPTRACK_CHECK_PARAM(where, "amplitude.threshold", check_positive(threshold));
-    MPTRACK_CHECK_PARAM(where, "amplitude.threshold", check(!(threshold > kMaxThreshold)));
+    MPTRACK_CHECK_PARAM(where, "amplitude.threshold", check_at_most(threshold, kMaxThreshold, "AmplitudeModel::kMaxThreshold"));
     MPTRACK_CHECK_PARAM(where, "amplitude.max_amplitude",
-                        check(max_amplitude > threshold && !(max_amplitude > kMaxAmplitude)));
+                        check_range_above(max_amplitude, threshold, kMaxAmplitude, "threshold, kMaxAmplitude"));
     MPTRACK_CHECK_PARAM(where, "amplitude.swerling", check(swerling == 1 || swerling == 3));
     return Status::kOk;
   }

@@ -4,6 +4,7 @@
 #include "mptrack/scenario/othr_generator.h"
 
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "mptrack/math/detmath.h"
@@ -118,6 +119,16 @@ Status Generator::init(const ScenarioSpec& spec, std::uint64_t seed, std::uint32
   error_ = validate(spec);
   if (error_.empty() && !(options.clutter_scale >= 0.0 && is_finite(options.clutter_scale))) {
     error_ = "clutter_scale: expected a non-negative number";
+  }
+  for (std::size_t i = 0; error_.empty() && i < spec.clutter.size(); ++i) {
+    // Bounded work: the Poisson draw of a scan is O(mean) (rng.h).
+    const double mean = spec.clutter[i].mean_count * options.clutter_scale;
+    if (mean > kMaxClutterMeanCount) {
+      char b[200];
+      std::snprintf(b, sizeof b, "clutter[%zu].mean_count x clutter_scale = %g x %g = %g: must be <= %g per scan",
+                    i, spec.clutter[i].mean_count, options.clutter_scale, mean, kMaxClutterMeanCount);
+      error_ = b;
+    }
   }
   if (!error_.empty()) return Status::kInvalidArgument;
   spec_ = spec;

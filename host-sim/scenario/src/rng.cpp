@@ -71,6 +71,9 @@ double Rng::exponential() { return -dmath::dlog(uniform_pos()); }
 
 std::uint32_t Rng::poisson(double mean) {
   if (!(mean > 0.0)) return 0;
+  // Bounded work: a draw is O(mean) uniforms; callers refuse larger means
+  // (scenario_spec.h kMaxPoissonMean), this guards the rest (and +inf).
+  if (!(mean <= kMaxPoissonMean)) mean = kMaxPoissonMean;
   std::uint32_t total = 0;
   double rest = mean;
   while (rest > 0.0) {

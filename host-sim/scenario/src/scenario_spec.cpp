@@ -1,6 +1,7 @@
 // ScenarioSpec validation and equality.
 #include "mptrack/scenario/scenario_spec.h"
 
+#include <cstdio>
 #include <string>
 
 #include "mptrack/validate.h"
@@ -15,6 +16,35 @@ bool non_negative(double x) { return finite(x) && x >= 0.0; }
 
 std::string at(const char* list, std::size_t i, const char* field) {
   return std::string(list) + "[" + std::to_string(i) + "]." + field;
+}
+
+// Bounds that keep a scenario's work and arithmetic finite (issue 17: a
+// period of 1e-320 s, a velocity of 1e308 m/s or a clutter mean of 1e308
+// hung or failed scans later instead of being refused here).
+constexpr double kMinScanPeriod_s = 1e-4;  // scan times are whole microseconds (generator.h)
+constexpr double kMaxScanPeriod_s = 3600.0;
+constexpr double kMaxCoord_m = 1e7;        // kMaxRegionCoordM (tracker_params.h)
+constexpr double kMaxSpeed_mps = 1e4;      // MfbpParams v_max bound
+constexpr double kMaxAccel_mps2 = 1e3;
+constexpr double kMaxRangeStd_m = 1e5;     // PolarNoise bounds (tracker_params.h)
+constexpr double kMaxAzimuthStd_deg = 57.29;  // 1 rad
+constexpr double kMaxThreshold = 1e3;      // AmplitudeModel::kMaxThreshold
+constexpr double kMaxPower = 1e12;         // SNR / CNR, linear
+
+std::string num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", x);
+  return b;
+}
+
+/// "" if lo <= x <= hi (lo < x if lo_open) and finite, else
+/// "NAME = X: must be in [lo, hi] UNIT".
+std::string bounded(const std::string& name, double x, double lo, double hi, const char* unit,
+                    bool lo_open = false) {
+  const bool ok = finite(x) && (lo_open ? x > lo : x >= lo) && x <= hi;
+  if (ok) return {};
+  return name + " = " + num(x) + ": must be in " + (lo_open ? "(" : "[") + num(lo) + ", " + num(hi) + "]" +
+         (unit[0] != '\0' ? std::string(" ") + unit : std::string());
 }
 
 std::string check_lifetime(const std::string& where, std::uint32_t birth, std::uint32_t death,
@@ -55,7 +85,11 @@ std::string validate_othr(const ScenarioSpec& s) {
 
 std::string validate(const ScenarioSpec& s) {
   if (s.num_scans < 1) return "scans: expected a positive integer";
-  if (!positive(s.scan_period_s)) return "scan_period_s: expected a positive number";
+  if (std::string e = bounded("scan_period_s", s.scan_period_s, kMinScanPeriod_s, kMaxScanPeriod_s,
+                              "s (scan times are whole microseconds)");
+      !e.empty()) {
+    return e;
+  }
   const Region& r = s.region;
   if (!non_negative(r.range_min_m) || !finite(r.range_max_m) || !(r.range_max_m > r.range_min_m)) {
     return "region.range_m: expected [min, max] with 0 <= min < max";
@@ -65,11 +99,16 @@ std::string validate(const ScenarioSpec& s) {
       r.azimuth_max_deg > 180.0) {
     return "region.azimuth_deg: expected [min, max] with -180 <= min < max <= 180";
   }
-  if (!positive(s.sigma_range_m)) return "measurement_noise.sigma_range_m: expected a positive number";
-  if (!positive(s.sigma_azimuth_deg)) {
-    return "measurement_noise.sigma_azimuth_deg: expected a positive number";
+  if (std::string e = bounded("measurement_noise.sigma_range_m", s.sigma_range_m, 0.0, kMaxRangeStd_m, "m", true);
+      !e.empty()) {
+    return e;
   }
-  if (!positive(s.threshold)) return "threshold: expected a positive number";
+  if (std::string e = bounded("measurement_noise.sigma_azimuth_deg", s.sigma_azimuth_deg, 0.0, kMaxAzimuthStd_deg,
+                              "deg", true);
+      !e.empty()) {
+    return e;
+  }
+  if (std::string e = bounded("threshold", s.threshold, 0.0, kMaxThreshold, "", true); !e.empty()) return e;
   if (s.eval_first_scan < 1 || s.eval_first_scan > s.eval_last_scan || s.eval_last_scan > s.num_scans) {
     return "evaluation: expected 1 <= first_scan <= last_scan <= scans";
   }
@@ -93,12 +132,17 @@ std::string validate(const ScenarioSpec& s) {
     for (std::size_t j = 0; j < i; ++j) {
       if (s.targets[j].id == t.id) return at("targets", i, "id") + ": duplicate id " + std::to_string(t.id);
     }
-    for (double v : t.initial_state) {
-      if (!finite(v)) return at("targets", i, "initial_state") + ": expected 4 finite numbers";
+    for (std::size_t j = 0; j < 4; ++j) {
+      const bool speed = j % 2 == 1;  // [px, vx, py, vy]
+      const std::string e = bounded(at("targets", i, "initial_state") + "[" + std::to_string(j) + "]",
+                                    t.initial_state[j], speed ? -kMaxSpeed_mps : -kMaxCoord_m,
+                                    speed ? kMaxSpeed_mps : kMaxCoord_m, speed ? "m/s" : "m");
+      if (!e.empty()) return e;
     }
     std::string e = check_lifetime(at("targets", i, "lifetime"), t.birth_scan, t.death_scan, s.num_scans);
     if (!e.empty()) return e;
-    if (!positive(t.snr)) return at("targets", i, "snr") + ": expected a positive number";
+    e = bounded(at("targets", i, "snr"), t.snr, 0.0, kMaxPower, "(linear)", true);
+    if (!e.empty()) return e;
     double last_start = -1e300;
     for (std::size_t j = 0; j < t.motion.size(); ++j) {
       const MotionSegment& m = t.motion[j];
@@ -107,7 +151,15 @@ std::string validate(const ScenarioSpec& s) {
         return w + ".start_s: expected a finite time, not before the previous segment";
       }
       last_start = m.start_s;
-      if (!finite(m.accel_mps2[0]) || !finite(m.accel_mps2[1])) return w + ".accel_mps2: expected 2 finite numbers";
+      for (std::size_t d = 0; d < 2; ++d) {
+        std::string em = bounded(w + ".accel_mps2[" + std::to_string(d) + "]", m.accel_mps2[d], -kMaxAccel_mps2,
+                                kMaxAccel_mps2, "m/s^2");
+        if (em.empty()) {
+          em = bounded(w + ".velocity_mps[" + std::to_string(d) + "]", m.velocity_mps[d], -kMaxSpeed_mps,
+                       kMaxSpeed_mps, "m/s");
+        }
+        if (!em.empty()) return em;
+      }
       if (!finite(m.turn_rate_deg_s)) return w + ".turn_rate_deg_s: expected a finite number";
       if (!finite(m.velocity_mps[0]) || !finite(m.velocity_mps[1])) {
         return w + ".velocity_mps: expected 2 finite numbers";
@@ -119,8 +171,14 @@ std::string validate(const ScenarioSpec& s) {
     for (std::size_t j = 0; j < i; ++j) {
       if (s.clutter[j].id == c.id) return at("clutter", i, "id") + ": duplicate id " + std::to_string(c.id);
     }
-    if (!non_negative(c.mean_count)) return at("clutter", i, "mean_count") + ": expected a non-negative number";
-    if (!positive(c.cnr)) return at("clutter", i, "cnr") + ": expected a positive number";
+    if (std::string e = bounded(at("clutter", i, "mean_count"), c.mean_count, 0.0, kMaxClutterMeanCount,
+                                "per scan (kMaxClutterMeanCount)");
+        !e.empty()) {
+      return e;
+    }
+    if (std::string e = bounded(at("clutter", i, "cnr"), c.cnr, 0.0, kMaxPower, "(linear)", true); !e.empty()) {
+      return e;
+    }
     std::string e = check_lifetime(at("clutter", i, "lifetime"), c.birth_scan, c.death_scan, s.num_scans);
     if (!e.empty()) return e;
     const TimeVariation& v = c.variation;
@@ -164,6 +222,16 @@ std::string validate(const ScenarioSpec& s) {
     }
   }
   return {};
+}
+
+double expected_measurements_per_scan(const ScenarioSpec& spec, double clutter_scale) {
+  double n = 0.0;
+  for (const ClutterSpec& c : spec.clutter) {
+    const double a = c.variation.count_sin_amplitude;
+    n += c.mean_count * (1.0 + (a < 0.0 ? -a : a)) * clutter_scale;
+  }
+  const double per_target = spec.space == MeasurementSpace::kOthr ? static_cast<double>(spec.othr.paths.size()) : 1.0;
+  return n + per_target * static_cast<double>(spec.targets.size());
 }
 
 bool operator==(const MotionSegment& a, const MotionSegment& b) {

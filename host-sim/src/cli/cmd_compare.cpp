@@ -6,6 +6,8 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/input_checks.h"
+#include "run/staged_output.h"
 #include "compare.h"
 #include "stream/adc_compare.h"
 #include "scenario_json.h"
@@ -56,9 +58,14 @@ int run_compare_command(const CompareArgs& a, const RunOptions& o) {
   if (cc.out_dir.empty()) cc.out_dir = "out/compare-" + cc.spec.name;
   cc.plot = !o.no_plot;
   cc.progress = !o.no_progress;
+  check_bounded_work(cc.spec, cc.clutter_scale);
+  const std::string out_dir = cc.out_dir;
+  StagedOutputDir staged(out_dir);  // nothing half-written if the run fails
+  cc.out_dir = staged.path();
   const CompareResult r = run_compare(cc);
+  staged.commit();
   std::printf("%s", compare_to_markdown(r).c_str());
-  std::printf("wrote %s/{compare.md,compare.json%s}\n", cc.out_dir.c_str(), cc.plot ? ",ospa.svg" : "");
+  std::printf("wrote %s/{compare.md,compare.json%s}\n", out_dir.c_str(), cc.plot ? ",ospa.svg" : "");
   return 0;
 }
 
@@ -73,16 +80,16 @@ void add_options(CLI::App& cmd, CompareArgs& a) {
                  "gmphd,gmphd-known,gmcphd,gmcphd-known,cbmember,cbmember-known; raw ADC "
                  "vmp,sbl-gnn,mfbp,mfbp-filter,gnn");
   cmd.add_option("--runs", a.config.runs, "Monte Carlo runs (each tracker sees the same runs)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(integer_in(1, 1000000));
   cmd.add_option("--seed", a.config.seed, "random seed (run r, scan k use stream (seed, r, k))")->capture_default_str();
   cmd.add_option("--out", a.config.out_dir, "output directory (default out/compare-<scenario>)");
   cmd.add_option("--scans", a.scans, "use only the first N scans (raw ADC: frames; 0 = all)");
   cmd.add_option("--clutter-scale", a.config.clutter_scale, "multiply every clutter mean count")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(number_in(0.0, 1e6));
   cmd.add_option("--ospa-c", a.config.ospa_cutoff_m, "OSPA/GOSPA cutoff c [m] (default: 300 for seed001, 631 for seed000)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(0.0, 1e9, true));
   cmd.add_option("--ospa-p", a.config.ospa_order, "OSPA/GOSPA order p (default: 1 for seed001, 2 for seed000)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(1.0, 64.0));
   cmd.add_option("--mfbp-param", a.config.mfbp_params, kMfbpParamHelp);
 }
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "cli/commands.h"
+#include "cli/input_checks.h"
+#include "run/staged_output.h"
 #include "mptrack/adc/adc_json.h"
 #include "runner.h"
 #include "scenario_json.h"
@@ -62,7 +64,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--scenario-file", o.scenario_file, "load a scenario from JSON (schema: host-sim/scenarios/*.json)")
       ->check(CLI::ExistingFile);
   app.add_option("--tracker", o.run.tracker, tracker_help)->capture_default_str();
-  app.add_option("--runs", o.run.runs, "Monte Carlo runs")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--runs", o.run.runs, "Monte Carlo runs")->capture_default_str()->check(integer_in(1, 4294967295u));
   app.add_option("--seed", o.run.seed, "random seed (run r uses stream (seed, r, scan))")->capture_default_str();
   app.add_option("--out", o.run.out_dir, "output directory (default out/<scenario>-<tracker>)");
   app.add_option("--swerling", o.swerling, "override the Swerling case of every target and clutter component (1 or 3)")
@@ -70,22 +72,26 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--snr1", o.snr1_text, "override target 1's mean SNR, linear (e.g. 10/3)");
   app.add_option("--snr2", o.snr2_text, "override target 2's mean SNR, linear (Table V: 10, 20, 30)");
   app.add_option("--clutter-scale", o.clutter_scale, "multiply every clutter mean count (sweeps: docs/algorithms/scenarios.md#seed-000)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(number_in(0.0, 1e6));
   app.add_option("--pd", o.pd, "OTHR scenarios: detection probability of every propagation path, in (0, 1]")
       ->check(CLI::Range(1e-6, 1.0));
   app.add_option("--scans", o.scans, "use only the first N scans (0 = all)");
   app.add_option("--frames", o.frames, "raw-ADC scenarios: use only the first N frames (0 = all)");
   app.add_option("--rate", o.rate_hz, "raw-ADC scenarios: producer frame rate [Hz], frames dropped on overrun "
                  "(0 = lossless, as fast as the consumer)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(number_in(0.0, 1e6));
   app.add_option("--csv-runs", o.run.csv_runs, "write CSV rows for the first N runs only (-1 = all)")->capture_default_str();
   app.add_option("--mfbp-param", o.run.mfbp_params, kMfbpParamHelp);
   app.add_flag("--no-plot", o.no_plot, "do not write plot.svg");
   app.add_flag("--no-progress", o.no_progress, "no progress output on stderr");
+  app.add_flag("--write-detections", o.run.write_detections,
+               "also write DIR/detections.csv: run 0's detections in the replay format (mptrack-sim replay)");
+  app.add_flag("--force", o.force, "write the CSVs even when their estimated size exceeds 2 GB");
 }
 
 int run_default_command(const RunOptions& o) {
   if (is_adc_scenario(o.scenario_name, o.scenario_file)) return run_adc_scenario(o);
+  check_raw_adc_only_flags(o.scenario_file.empty() ? o.scenario_name : o.scenario_file, o.rate_hz, o.frames);
   RunConfig cfg;
   fill_common(o, cfg);
   cfg.spec = o.scenario_file.empty() ? resolve_scenario(o.scenario_name) : load_scenario_file(o.scenario_file);
@@ -94,8 +100,14 @@ int run_default_command(const RunOptions& o) {
   truncate_scans(cfg.spec, o.scans);
   cfg.clutter_scale = o.clutter_scale;
   if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.spec.name + "-" + cfg.tracker;
+  check_bounded_work(cfg.spec, cfg.clutter_scale);
+  check_output_size(cfg.spec, cfg.clutter_scale, cfg.runs, cfg.csv_runs, cfg.out_dir, o.force);
+  const std::string out_dir = cfg.out_dir;
+  StagedOutputDir staged(out_dir);  // nothing half-written if the run fails
+  cfg.out_dir = staged.path();
   const Summary s = run_monte_carlo(cfg);
-  print_run_summary(s, cfg.out_dir);
+  staged.commit();
+  print_run_summary(s, out_dir);
   return 0;
 }
 
@@ -105,8 +117,12 @@ int run_adc_command(const std::string& name, const std::string& file, AdcRunConf
     return 2;
   }
   if (cfg.out_dir.empty()) cfg.out_dir = "out/" + cfg.scenario.name + "-" + cfg.tracker;
+  const std::string out_dir = cfg.out_dir;
+  StagedOutputDir staged(out_dir);  // nothing half-written if the run fails
+  cfg.out_dir = staged.path();
   const AdcSummary s = run_adc_monte_carlo(cfg);
-  print_adc_summary(s, cfg.out_dir);
+  staged.commit();
+  print_adc_summary(s, out_dir);
   return 0;
 }
 

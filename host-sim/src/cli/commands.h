@@ -34,6 +34,7 @@ struct RunOptions {
   double rate_hz = 0.0;
   bool no_plot = false;
   bool no_progress = false;
+  bool force = false;                 ///< --force: write even above the output-size limit (input_checks.h)
 };
 
 /// A registered subcommand and what it does once parsed.
@@ -61,6 +62,7 @@ Subcommand add_table5_command(CLI::App& app);
 Subcommand add_compare_command(CLI::App& app);
 Subcommand add_scenario_export_command(CLI::App& app);
 Subcommand add_dataset_command(CLI::App& app);  // cmd_dataset.cpp (seed 003 sea clutter)
+Subcommand add_replay_command(CLI::App& app);  // cmd_replay.cpp
 
 // Shared by several commands (cli_common.cpp).
 /// Help text of --mfbp-param (the same on every command that takes it).

@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "cli/input_checks.h"
 #include "run/scan_source.h"
 
 namespace mptrack::sim {
@@ -24,6 +25,7 @@ void MeasurementSource::begin_run(std::uint32_t run) {
       throw std::runtime_error("generator failed at scan " + std::to_string(k));
     }
   }
+  if (run == 0) check_targets_in_region(spec_, scans_);
 }
 
 void MeasurementSource::deliver(const ScanStep& step, FrameInput /*input: always detections*/) {

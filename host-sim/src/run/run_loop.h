@@ -49,6 +49,7 @@ struct TrackerRunOptions {
   std::int64_t csv_runs = -1;            ///< runs written to the CSVs (-1 = all)
   bool plot = true;                      ///< write plot.svg (run 0)
   bool progress = true;                  ///< progress bar on stderr
+  bool write_detections = false;         ///< DIR/detections.csv of run 0 (replay format, replay/detections_csv.h)
 };
 
 /// The loop of one tracker from those options (progress "<scenario> <tracker>").

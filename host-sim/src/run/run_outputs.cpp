@@ -1,6 +1,7 @@
 // Per-run output observers; see run_outputs.h.
 #include "run/run_outputs.h"
 
+#include "replay/detections_csv.h"
 #include "svg_plot.h"
 
 namespace mptrack::sim {
@@ -34,9 +35,16 @@ std::vector<RunObserver*> RunOutputs::observers() {
   return out;
 }
 
-void RunOutputs::write_plot(const std::vector<double>& ospa_per_scan, const std::string& title) const {
+void RunOutputs::write_plot(const std::vector<double>& ospa_per_scan, const std::string& title, double order_p,
+                            double cutoff_m) const {
   if (options_.out_dir.empty() || !options_.plot) return;
-  write_plot_svg(options_.out_dir + "/plot.svg", spec_, first_.scans, first_.estimates, ospa_per_scan, title);
+  write_plot_svg(options_.out_dir + "/plot.svg", spec_, first_.scans, first_.estimates, ospa_per_scan, title,
+                 order_p, cutoff_m);
+}
+
+void RunOutputs::write_detections() const {
+  if (options_.out_dir.empty() || !options_.write_detections) return;
+  write_detections_csv(options_.out_dir + "/detections.csv", first_.scans);
 }
 
 }  // namespace mptrack::sim

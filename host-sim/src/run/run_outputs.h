@@ -45,7 +45,11 @@ class RunOutputs {
   /// The observers to give run_loop().
   std::vector<RunObserver*> observers();
   /// DIR/plot.svg of run 0 when out_dir is set and plot is on.
-  void write_plot(const std::vector<double>& ospa_per_scan, const std::string& title) const;
+  /// order_p, cutoff_m: the run's OSPA metric, printed on the plot.
+  void write_plot(const std::vector<double>& ospa_per_scan, const std::string& title, double order_p = 2.0,
+                  double cutoff_m = 631.0) const;
+  /// DIR/detections.csv of run 0 when out_dir is set and write_detections is on.
+  void write_detections() const;
 
  private:
   const TrackerRunOptions& options_;

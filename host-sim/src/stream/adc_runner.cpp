@@ -217,7 +217,7 @@ std::vector<AdcSummary> run_adc_loop(const AdcRunConfig& cfg, const std::vector<
     char title[200];
     std::snprintf(title, sizeof title, "%s / %s, raw ADC (run 0; OSPA c = %g m, mean of %u runs)", sc.name.c_str(),
                   trackers.front().c_str(), sc.ospa_cutoff_m, cfg.runs);
-    outputs->write_plot(out.front().base.ospa_per_scan, title);
+    outputs->write_plot(out.front().base.ospa_per_scan, title, sc.ospa_order, sc.ospa_cutoff_m);
   }
   source.print_stage_profile();
   return out;

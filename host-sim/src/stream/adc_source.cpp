@@ -1,6 +1,8 @@
 // Raw-ADC scan source; see adc_source.h.
 #include "stream/adc_source.h"
 
+#include "param_error_text.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -120,13 +122,13 @@ void AdcScanSource::deliver(const ScanStep& step, FrameInput input) {
   if (input == FrameInput::kCfarDetections) {
     const frontend::FrontEndParams fp = adc::frontend_params_for(sc_);
     if (frontend::FrontEnd<adc::AdcCaps>::validate(fp, &where) != Status::kOk) {
-      throw std::runtime_error(std::string("invalid front-end parameter ") + where.field + ": needs " + where.rule);
+      throw std::runtime_error("invalid front-end parameter " + describe_param_error("frontend", where));
     }
     if (fe_->fe.init(fp) != Status::kOk) throw std::runtime_error("front end init failed");
   } else if (input == FrameInput::kSblDetections) {
     const SblParams sp = adc::sbl_params_for(sc_);
     if (SblDetector<float>::validate(sp, &where) != Status::kOk) {
-      throw std::runtime_error(std::string("invalid SBL detector parameter ") + where.field + ": needs " + where.rule);
+      throw std::runtime_error("invalid SBL detector parameter " + describe_param_error("sbl", where));
     }
     if (fe_->sbl.init(sp) != Status::kOk) throw std::runtime_error("SBL detector init failed");
   }

@@ -131,7 +131,7 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     }
     const std::string error = apply_mfbp_params(p, setup.mfbp_params);
     if (!error.empty()) return error;
-    return init_tracker(p);
+    return init_tracker(p, "mfbp");
   }
 
  private:
@@ -158,7 +158,7 @@ class AdcGnnAdapter final : public CoreTrackerAdapter<GnnTracker<double, Default
       p.noise.azimuth_std_rad = scenario::deg_to_rad(kSblBearingStd_deg);
     }
     p.region = scenario_region(s);
-    return init_tracker(p);
+    return init_tracker(p, "gnn");
   }
 
  private:

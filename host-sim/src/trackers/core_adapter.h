@@ -10,6 +10,7 @@
 #include "mptrack/scenario/generator.h"
 #include "mptrack/tracker_params.h"
 #include "mptrack/validate.h"
+#include "param_error_text.h"
 #include "tracker_adapter.h"
 
 namespace mptrack::sim {
@@ -49,12 +50,11 @@ class CoreTrackerAdapter : public TrackerAdapter {
   virtual void before_step(std::uint32_t /*scan*/) {}
 
   /// Initialises the tracker; on refusal the message names the field and
-  /// the rule it broke (Tracker::validate, tracker_contract.h).
-  std::string init_tracker(const Params& params) {
+  /// the rule it broke (Tracker::validate, tracker_contract.h), prefixed
+  /// with `family` ("mfbp.window_length = 100: must be <= 7 (Caps::kMaxWindow)").
+  std::string init_tracker(const Params& params, const char* family = "") {
     ParamError where;
-    if (Tracker::validate(params, &where) != Status::kOk) {
-      return std::string("invalid tracker parameter ") + where.field + ": needs " + where.rule;
-    }
+    if (Tracker::validate(params, &where) != Status::kOk) return describe_param_error(family, where);
     const Status st = tracker_->init(params);
     return st == Status::kOk ? std::string() : std::string("init failed: ") + to_string(st);
   }

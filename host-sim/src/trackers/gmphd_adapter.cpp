@@ -115,9 +115,9 @@ class IggmAdapter final : public CoreTrackerAdapter<Filter> {
       return "unknown IGGM variant '" + variant_ + "'";
     }
     if (setup.spec.space == scenario::MeasurementSpace::kCartesian) {
-      return this->init_tracker(cartesian_params_for(setup, variant_));
+      return this->init_tracker(cartesian_params_for(setup, variant_), "rfs");
     }
-    return this->init_tracker(params_for(setup, variant_));
+    return this->init_tracker(params_for(setup, variant_), "rfs");
   }
 
  private:

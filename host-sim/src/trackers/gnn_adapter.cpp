@@ -21,7 +21,7 @@ class GnnAdapter final : public CoreTrackerAdapter<Tracker> {
     p.region = scenario_region(s);
     p.accel_var_m2ps4 = 1.0;          // (1 m/s^2)^2: seed 000 maneuvers reach 0.33 m/s^2
     p.init_velocity_std_mps = 60.0;   // v_max = 120 m/s (seed 000 Sec. IV-A) / 2
-    return init_tracker(p);
+    return init_tracker(p, "gnn");
   }
 };
 

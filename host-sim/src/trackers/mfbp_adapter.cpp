@@ -55,6 +55,13 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
     } else if (variant_ == "mfbp-nce") {
       p.clutter_mode = ClutterMode::kUniformKnownRate;
     } else if (variant_ == "mfbp-kce") {
+      std::size_t components = 0;
+      for (const auto& c : spec_.clutter) components += c.uniform ? 0 : 1;
+      if (components > kMaxKnownClutterComponents) {
+        return "mfbp.known_clutter.num_components = " + std::to_string(components) +
+               " (the scenario's non-uniform clutter components): must be <= " +
+               std::to_string(kMaxKnownClutterComponents) + " (kMaxKnownClutterComponents)";
+      }
       p.clutter_mode = ClutterMode::kKnown;
       p.known_clutter = known_clutter(1);
     } else if (variant_ == "mfbp-st") {
@@ -64,7 +71,7 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
     }
     const std::string error = apply_mfbp_params(p, setup.mfbp_params);
     if (!error.empty()) return error;
-    return init_tracker(p);
+    return init_tracker(p, "mfbp");
   }
 
  private:

@@ -80,7 +80,10 @@ std::string apply_mfbp_param(MfbpParams<double>& p, const std::string& kv) {
   }
   for (const Count& c : kCounts) {
     if (name == c.name) {
-      c.field(p) = v < 0.0 ? std::size_t{0} : static_cast<std::size_t>(v);
+      if (!(v >= 0.0 && v <= 1e9 && v == static_cast<double>(static_cast<std::size_t>(v)))) {
+        return "--mfbp-param " + name + " = " + text + ": must be an integer in [0, 1e9]";
+      }
+      c.field(p) = static_cast<std::size_t>(v);
       return "";
     }
   }
@@ -89,6 +92,12 @@ std::string apply_mfbp_param(MfbpParams<double>& p, const std::string& kv) {
       if (v != 0.0 && v != 1.0) return "--mfbp-param " + name + ": expected 0 or 1, got '" + text + "'";
       f.field(p) = v != 0.0;
       return "";
+    }
+  }
+  for (const Flag& f : kFlags) {  // "use_amplitude" for "amplitude.use_amplitude"
+    const std::string full = f.name;
+    if (full.size() > name.size() && full.compare(full.size() - name.size() - 1, std::string::npos, "." + name) == 0) {
+      return "--mfbp-param: unknown parameter '" + name + "'; did you mean '" + full + "' (0 or 1)?";
     }
   }
   return "--mfbp-param: unknown parameter '" + name + "' (see host-sim/README.md)";

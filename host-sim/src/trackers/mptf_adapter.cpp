@@ -50,7 +50,7 @@ class MptfAdapter final : public CoreTrackerAdapter<Tracker> {
     p.clutter_mean_count = static_cast<float>(clutter > 1.0 ? clutter : 1.0);
     p.delete_misses = clutter > kDenseClutter ? 5u : 3u;
     p.max_gap_s = static_cast<float>(4.0 * s.scan_period_s);
-    return init_tracker(p);
+    return init_tracker(p, "mptf");
   }
 };
 

@@ -69,7 +69,7 @@ class MultipathAdapter final : public CoreTrackerAdapter<Tracker> {
     p.smoothing_lag_scans = kDefaultLagScans;
     const std::string error = apply_overrides(setup.mfbp_params, p);
     if (!error.empty()) return error;
-    return init_tracker(p);
+    return init_tracker(p, "multipath");
   }
 };
 

@@ -5,6 +5,7 @@
 
 #include "mptrack/adc/vmp_config.h"
 #include "mptrack/vmp/vmp_tracker.h"
+#include "param_error_text.h"
 
 namespace mptrack::sim {
 
@@ -21,7 +22,7 @@ class VmpAdapter final : public TrackerAdapter {
     const VmpParams p = adc::vmp_params_for(*setup.raw_scenario);
     ParamError where;
     if (Tracker::validate(p, &where) != Status::kOk) {
-      return std::string("invalid tracker parameter ") + where.field + ": needs " + where.rule;
+      return describe_param_error("vmp", where);
     }
     const Status st = tracker_->init(p);
     return st == Status::kOk ? std::string() : std::string("init failed: ") + to_string(st);

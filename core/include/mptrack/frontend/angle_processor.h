@@ -62,7 +62,7 @@ class AngleProcessor {
     MPTRACK_TRY(check_range(p.element_spacing_wavelengths, 1e-3, 1.0));
     MPTRACK_TRY(check_range(p.max_abs_bearing_rad, 1e-6,
                             mptrack::dmath::kHalfPi<double>));
-    MPTRACK_TRY(check(p.angle_refine_iterations <= 64));
+    MPTRACK_TRY(check_at_most(p.angle_refine_iterations, 64));
     MPTRACK_TRY(fft_.init());
     fill_window(p.angle_window, window_.data(), kNumVirtual);
     spacing_ = p.element_spacing_wavelengths;

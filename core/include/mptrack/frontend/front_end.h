@@ -88,7 +88,7 @@ class FrontEnd {
   /// the field in *where (validate.h).
   static Status validate(const FrontEndParams& p, ParamError* where = nullptr) {
     MPTRACK_TRY(p.validate(where));
-    MPTRACK_CHECK_PARAM(where, "max_detections", check(p.max_detections <= Caps::kMaxDetections));
+    MPTRACK_CHECK_PARAM(where, "max_detections", check_at_most(p.max_detections, Caps::kMaxDetections, "Caps::kMaxDetections"));
     const std::size_t len = chirp_samples(p);
     MPTRACK_CHECK_PARAM(where, "chirp_duration_s",
                         check(len >= 1 && len <= Caps::kNumSamples &&
@@ -97,7 +97,7 @@ class FrontEnd {
     std::size_t g_lo = 0;
     std::size_t g_hi = 0;
     range_gate(p, g_lo, g_hi);
-    MPTRACK_CHECK_PARAM(where, "max_range_m", check(g_hi > g_lo));
+    MPTRACK_CHECK_PARAM(where, "max_range_m", check_above(g_hi, g_lo, "g_lo"));
     return Status::kOk;
   }
 

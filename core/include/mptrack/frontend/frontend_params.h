@@ -59,8 +59,8 @@ struct CfarParams {
                               type == CfarType::kSmallestOf || type == CfarType::kOrderedStatistic));
     MPTRACK_CHECK_PARAM(where, "cfar.edge",
                         check(edge == CfarEdge::kSkip || edge == CfarEdge::kShift || edge == CfarEdge::kWrap));
-    MPTRACK_CHECK_PARAM(where, "cfar.guard_cells", check(guard_cells <= 64));
-    MPTRACK_CHECK_PARAM(where, "cfar.training_cells", check(training_cells >= 1 && training_cells <= 64));
+    MPTRACK_CHECK_PARAM(where, "cfar.guard_cells", check_at_most(guard_cells, 64));
+    MPTRACK_CHECK_PARAM(where, "cfar.training_cells", check_range(training_cells, 1, 64));
     MPTRACK_CHECK_PARAM(where, "cfar.pfa", check_range(pfa, 1e-300, 0.5));
     MPTRACK_CHECK_PARAM(where, "cfar.os_rank", check(os_rank <= 2 * training_cells));
     return Status::kOk;
@@ -120,12 +120,12 @@ struct FrontEndParams {
     MPTRACK_CHECK_PARAM(where, "angle_window", check(is_valid_window(angle_window)));
     MPTRACK_CHECK_PARAM(where, "max_abs_bearing_rad",
                         check_range(max_abs_bearing_rad, 1e-6, mptrack::dmath::kHalfPi<double>));
-    MPTRACK_CHECK_PARAM(where, "min_range_m", check(is_finite(min_range_m) && min_range_m >= 0.0));
-    MPTRACK_CHECK_PARAM(where, "max_range_m", check(is_finite(max_range_m) && max_range_m > min_range_m));
+    MPTRACK_CHECK_PARAM(where, "min_range_m", check_at_least(min_range_m, 0.0));
+    MPTRACK_CHECK_PARAM(where, "max_range_m", check_above(max_range_m, min_range_m, "min_range_m"));
     MPTRACK_TRY(cfar.validate(where));
-    MPTRACK_CHECK_PARAM(where, "max_detections", check(max_detections >= 1));
+    MPTRACK_CHECK_PARAM(where, "max_detections", check_at_least(max_detections, 1));
     MPTRACK_CHECK_PARAM(where, "min_noise_power", check_range(min_noise_power, 0.0, 1e30));
-    MPTRACK_CHECK_PARAM(where, "angle_refine_iterations", check(angle_refine_iterations <= 64));
+    MPTRACK_CHECK_PARAM(where, "angle_refine_iterations", check_at_most(angle_refine_iterations, 64));
     MPTRACK_CHECK_PARAM(where, "max_abs_sample", check_range(max_abs_sample, 1e-6, 1e9));
     MPTRACK_CHECK_PARAM(where, "saturation_fraction", check_range(saturation_fraction, 0.0, 1.0));
     return Status::kOk;

@@ -64,7 +64,7 @@ class MimoSpectrum {
     MPTRACK_TRY(check_positive(c.sample_rate_hz));
     MPTRACK_TRY(check_positive(c.noise_variance_v2));
     const std::size_t len = chirp_length(c.chirp_duration_s, c.sample_rate_hz);
-    MPTRACK_TRY(check(len >= 1 && len <= Caps::kNumSamples));
+    MPTRACK_TRY(check_range(len, 1, Caps::kNumSamples, "Caps::kNumSamples"));
     MPTRACK_TRY(fft_.init());
     const ReferenceChirp chirp(c.bandwidth_hz, c.chirp_duration_s, c.sample_rate_hz, len);
     const double inv_sqrt_n = 1.0 / std::sqrt(static_cast<double>(kN));

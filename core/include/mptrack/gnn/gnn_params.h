@@ -77,11 +77,11 @@ struct GnnParams {
     MPTRACK_CHECK_PARAM(where, "init_velocity_std_mps",
                         check_range(init_velocity_std_mps, kMinVelocityStdMps, kMaxVelocityStdMps));
     MPTRACK_CHECK_PARAM(where, "gate_chi2", check_positive(gate_chi2));
-    MPTRACK_CHECK_PARAM(where, "gate_chi2", check(!(gate_chi2 > kMaxGateChi2)));
-    MPTRACK_CHECK_PARAM(where, "confirm_hits", check(confirm_hits >= 1 && confirm_hits <= confirm_window));
+    MPTRACK_CHECK_PARAM(where, "gate_chi2", check_at_most(gate_chi2, kMaxGateChi2, "kMaxGateChi2"));
+    MPTRACK_CHECK_PARAM(where, "confirm_hits", check_range(confirm_hits, 1, confirm_window, "confirm_window"));
     MPTRACK_CHECK_PARAM(where, "confirm_window",
-                        check(confirm_window >= 1 && confirm_window <= kMaxConfirmWindow));
-    MPTRACK_CHECK_PARAM(where, "max_misses", check(max_misses >= 1 && max_misses <= 1000000));
+                        check_range(confirm_window, 1, kMaxConfirmWindow, "kMaxConfirmWindow"));
+    MPTRACK_CHECK_PARAM(where, "max_misses", check_range(max_misses, 1, 1000000));
     MPTRACK_TRY(region.validate(where));
     MPTRACK_CHECK_PARAM(where, "noise.azimuth_std_rad",
                         check(!(region.range_max_m * noise.azimuth_std_rad >

@@ -285,18 +285,18 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   const T span_r = region.range_max_m - region.range_min_m;
   const T span_a = region.azimuth_max_rad - region.azimuth_min_rad;
   MPTRACK_CHECK_PARAM(w, "region", check(!(span_r * span_a < kMinVolume)));
-  MPTRACK_CHECK_PARAM(w, "scan_period_s", check(scan_period_s > T(0) && !(scan_period_s > T(3600))));
+  MPTRACK_CHECK_PARAM(w, "scan_period_s", check_range_above(scan_period_s, T(0), T(3600)));
   MPTRACK_CHECK_PARAM(w, "max_gap_s", check_range(max_gap_s, T(1e-3), T(1e6)));
-  MPTRACK_CHECK_PARAM(w, "accel_var_m2ps4", check(accel_var_m2ps4 > T(0) && !(accel_var_m2ps4 > T(1e6))));
+  MPTRACK_CHECK_PARAM(w, "accel_var_m2ps4", check_range_above(accel_var_m2ps4, T(0), T(1e6)));
   MPTRACK_CHECK_PARAM(w, "manoeuvre_noise_var_max",
-                      check(manoeuvre_noise_var_max > T(0) && !(manoeuvre_noise_var_max > T(1e6))));
-  MPTRACK_CHECK_PARAM(w, "manoeuvre_fading", check(manoeuvre_fading >= T(0) && manoeuvre_fading < T(1)));
+                      check_range_above(manoeuvre_noise_var_max, T(0), T(1e6)));
+  MPTRACK_CHECK_PARAM(w, "manoeuvre_fading", check_range_below(manoeuvre_fading, T(0), T(1)));
   MPTRACK_TRY(noise.validate(w));
-  MPTRACK_CHECK_PARAM(w, "gate_chi2", check(gate_chi2 > T(0) && !(gate_chi2 > T(1e6))));
+  MPTRACK_CHECK_PARAM(w, "gate_chi2", check_range_above(gate_chi2, T(0), T(1e6)));
   MPTRACK_CHECK_PARAM(w, "clutter_gate_chi2",
-                      check(clutter_gate_chi2 > T(0) && !(clutter_gate_chi2 > T(1e6))));
-  MPTRACK_CHECK_PARAM(w, "unresolved_chi2", check(unresolved_chi2 >= T(0) && !(unresolved_chi2 > T(1e6))));
-  MPTRACK_CHECK_PARAM(w, "doppler_span_mps", check(doppler_span_mps > T(0) && !(doppler_span_mps > T(1e6))));
+                      check_range_above(clutter_gate_chi2, T(0), T(1e6)));
+  MPTRACK_CHECK_PARAM(w, "unresolved_chi2", check_range(unresolved_chi2, T(0), T(1e6)));
+  MPTRACK_CHECK_PARAM(w, "doppler_span_mps", check_range_above(doppler_span_mps, T(0), T(1e6)));
   MPTRACK_TRY(amplitude.validate(w));
   MPTRACK_CHECK_PARAM(w, "pd_no_amplitude", check_open_probability(pd_no_amplitude));
   MPTRACK_CHECK_PARAM(w, "forgetting_target", check_range(forgetting_target, T(1), T(10)));
@@ -307,15 +307,15 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "p_birth", check_open_probability(p_birth));
   MPTRACK_CHECK_PARAM(w, "pd_invisible", check_open_probability(pd_invisible));
   MPTRACK_CHECK_PARAM(w, "visibility_at_birth", check_open_probability(visibility_at_birth));
-  MPTRACK_CHECK_PARAM(w, "window_length", check(window_length >= 1));
-  MPTRACK_CHECK_PARAM(w, "slide", check(slide >= 1 && slide <= window_length));
-  MPTRACK_CHECK_PARAM(w, "mp_max_iterations", check(mp_max_iterations >= 1 && mp_max_iterations <= 100));
+  MPTRACK_CHECK_PARAM(w, "window_length", check_at_least(window_length, 1));
+  MPTRACK_CHECK_PARAM(w, "slide", check_range(slide, 1, window_length, "window_length"));
+  MPTRACK_CHECK_PARAM(w, "mp_max_iterations", check_range(mp_max_iterations, 1, 100));
   MPTRACK_CHECK_PARAM(w, "mp_tolerance", check_positive(mp_tolerance));
   MPTRACK_CHECK_PARAM(w, "bp_max_iterations",
-                      check(bp_max_iterations >= 1 && bp_max_iterations <= 100000));
+                      check_range(bp_max_iterations, 1, 100000));
   MPTRACK_CHECK_PARAM(w, "bp_tolerance", check_positive(bp_tolerance));
   MPTRACK_CHECK_PARAM(w, "bp_damping",
-                      check(is_finite(bp_damping) && bp_damping >= T(0) && bp_damping < T(1)));
+                      check_range_below(bp_damping, T(0), T(1)));
   MPTRACK_CHECK_PARAM(w, "w_min", check_positive(w_min));
   MPTRACK_CHECK_PARAM(w, "uniform_rate_per_scan", check_range(uniform_rate_per_scan, kMinCount, kMaxCount));
   MPTRACK_CHECK_PARAM(w, "nw_forgetting_factor",
@@ -326,16 +326,16 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "uniform_cnr_prior", check_range(uniform_cnr_prior, T(1e-6), kMaxPower));
   MPTRACK_CHECK_PARAM(w, "uniform_cnr_prior_shape",
                       check(uniform_cnr_prior_shape > T(1) && !(uniform_cnr_prior_shape > kMaxCount)));
-  MPTRACK_CHECK_PARAM(w, "v_max_x_mps", check(v_max_x_mps > T(0) && !(v_max_x_mps > T(1e4))));
-  MPTRACK_CHECK_PARAM(w, "v_max_y_mps", check(v_max_y_mps > T(0) && !(v_max_y_mps > T(1e4))));
-  MPTRACK_CHECK_PARAM(w, "birth_max_lag", check(birth_max_lag >= 1 && birth_max_lag <= 3));
-  MPTRACK_CHECK_PARAM(w, "birth_max_per_window", check(birth_max_per_window >= 1));
+  MPTRACK_CHECK_PARAM(w, "v_max_x_mps", check_range_above(v_max_x_mps, T(0), T(1e4)));
+  MPTRACK_CHECK_PARAM(w, "v_max_y_mps", check_range_above(v_max_y_mps, T(0), T(1e4)));
+  MPTRACK_CHECK_PARAM(w, "birth_max_lag", check_range(birth_max_lag, 1, 3));
+  MPTRACK_CHECK_PARAM(w, "birth_max_per_window", check_at_least(birth_max_per_window, 1));
   MPTRACK_CHECK_PARAM(w, "unexplained_threshold", check_open_probability(unexplained_threshold));
   MPTRACK_CHECK_PARAM(w, "birth_max_component_share", check_range(birth_max_component_share, T(0), T(1)));
   MPTRACK_CHECK_PARAM(w, "confirm_threshold", check_open_probability(confirm_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_threshold", check_open_probability(delete_threshold));
-  MPTRACK_CHECK_PARAM(w, "delete_run", check(delete_run >= 1));
-  MPTRACK_CHECK_PARAM(w, "tentative_timeout_scans", check(tentative_timeout_scans >= 1));
+  MPTRACK_CHECK_PARAM(w, "delete_run", check_at_least(delete_run, 1));
+  MPTRACK_CHECK_PARAM(w, "tentative_timeout_scans", check_at_least(tentative_timeout_scans, 1));
   MPTRACK_CHECK_PARAM(w, "report_existence_min", check_range(report_existence_min, T(0), T(1)));
   MPTRACK_TRY(validate_clutter_grid(span_r, span_a, kMaxCellsPerAxis, kMaxSeedCells,
                                     kMaxCellVolumeRatio, kMaxSeedFactor, kMaxCount, w));
@@ -363,9 +363,9 @@ Status MfbpParams<T>::validate_clutter_grid(T span_r, T span_a, T max_cells_per_
                       check(!(clutter_cell_range_m * clutter_cell_az_rad >
                               max_cell_volume_ratio * span_r * span_a)));
   MPTRACK_CHECK_PARAM(w, "clutter_seed_factor",
-                      check(clutter_seed_factor > T(0) && !(clutter_seed_factor > max_seed_factor)));
+                      check_range_above(clutter_seed_factor, T(0), max_seed_factor));
   MPTRACK_CHECK_PARAM(w, "clutter_death_count", check_range(clutter_death_count, T(0), max_count));
-  MPTRACK_CHECK_PARAM(w, "clutter_death_windows", check(clutter_death_windows >= 1));
+  MPTRACK_CHECK_PARAM(w, "clutter_death_windows", check_at_least(clutter_death_windows, 1));
   return Status::kOk;
 }
 
@@ -374,7 +374,7 @@ template <class T>
 Status MfbpParams<T>::validate_known_clutter(T min_count, T max_count, T max_power, ParamError* w) const {
   const auto& kc = known_clutter;
   MPTRACK_CHECK_PARAM(w, "known_clutter.num_components",
-                      check(kc.num_components <= kMaxKnownClutterComponents));
+                      check_at_most(kc.num_components, kMaxKnownClutterComponents, "kMaxKnownClutterComponents"));
   if (clutter_mode != ClutterMode::kKnownMap) return Status::kOk;
   MPTRACK_CHECK_PARAM(w, "known_clutter.uniform_rate_per_scan",
                       check_range(kc.uniform_rate_per_scan, min_count, max_count));

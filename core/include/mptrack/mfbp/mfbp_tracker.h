@@ -113,12 +113,12 @@ class MfbpTracker {
   /// clutter components. On failure names the field in *where (validate.h).
   static Status validate(const Params& p, ParamError* where = nullptr) {
     MPTRACK_TRY(p.validate(where));
-    MPTRACK_CHECK_PARAM(where, "window_length", check(p.window_length <= kMaxWindow));
+    MPTRACK_CHECK_PARAM(where, "window_length", check_at_most(p.window_length, kMaxWindow, "Caps::kMaxWindow"));
     MPTRACK_CHECK_PARAM(where, "birth_max_per_window",
-                        check(p.birth_max_per_window <= mfbp::kMaxBirthCandidates<Caps>));
+                        check_at_most(p.birth_max_per_window, mfbp::kMaxBirthCandidates<Caps>, "mfbp::kMaxBirthCandidates<Caps>"));
     if (p.clutter_mode == ClutterMode::kKnownMap) {
       MPTRACK_CHECK_PARAM(where, "known_clutter.num_components",
-                          check(p.known_clutter.num_components <= kMaxComp));
+                          check_at_most(p.known_clutter.num_components, kMaxComp, "Caps::kMaxClutterComponents"));
     }
     return Status::kOk;
   }

@@ -104,39 +104,39 @@ struct MultipathParams {
   T min_variance = T(1e-14);      ///< diagonal floor of the last-resort covariance repair [-]
 
   Status validate(ParamError* where = nullptr) const {
-    MPTRACK_CHECK_PARAM(where, "num_paths", check(num_paths >= 1 && num_paths <= multipath::kParamPaths));
+    MPTRACK_CHECK_PARAM(where, "num_paths", check_range(num_paths, 1, multipath::kParamPaths, "multipath::kParamPaths"));
     for (std::uint32_t p = 0; p < num_paths; ++p) {
       MPTRACK_CHECK_PARAM(where, "paths", check_range(paths[p].tx_height_km, T(0), T(1e4)));
       MPTRACK_CHECK_PARAM(where, "paths", check_range(paths[p].rx_height_km, T(0), T(1e4)));
       MPTRACK_CHECK_PARAM(where, "pd", check(pd[p] > T(0) && pd[p] < T(1)));
       MPTRACK_CHECK_PARAM(where, "pd", check(pd[p] > pd_dormant));
     }
-    MPTRACK_CHECK_PARAM(where, "pd_dormant", check(pd_dormant > T(0) && pd_dormant < T(1)));
+    MPTRACK_CHECK_PARAM(where, "pd_dormant", check_open_probability(pd_dormant));
     MPTRACK_CHECK_PARAM(where, "baseline_km", check_range(baseline_km, T(0), T(1e4)));
     MPTRACK_TRY(region.validate(where));
-    MPTRACK_CHECK_PARAM(where, "region.range_min_m", check(region.range_min_m > T(0)));
+    MPTRACK_CHECK_PARAM(where, "region.range_min_m", check_positive(region.range_min_m));
     MPTRACK_CHECK_PARAM(where, "range_rate_span_mps", check_range(range_rate_span_mps, T(1e-3), T(1e5)));
     MPTRACK_TRY(noise.validate(where));
     MPTRACK_CHECK_PARAM(where, "clutter_mean_count", check_range(clutter_mean_count, T(1e-3), T(1e5)));
     MPTRACK_CHECK_PARAM(where, "range_psd_m2ps3", check_range(range_psd_m2ps3, T(0), T(1e6)));
     MPTRACK_CHECK_PARAM(where, "bearing_psd_rad2ps3", check_range(bearing_psd_rad2ps3, T(0), T(1)));
-    MPTRACK_CHECK_PARAM(where, "p_stay_active", check(p_stay_active > T(0) && p_stay_active < T(1)));
-    MPTRACK_CHECK_PARAM(where, "p_become_active", check(p_become_active > T(0) && p_become_active < T(1)));
-    MPTRACK_CHECK_PARAM(where, "confirm_existence", check(confirm_existence > T(0) && confirm_existence < T(1)));
+    MPTRACK_CHECK_PARAM(where, "p_stay_active", check_open_probability(p_stay_active));
+    MPTRACK_CHECK_PARAM(where, "p_become_active", check_open_probability(p_become_active));
+    MPTRACK_CHECK_PARAM(where, "confirm_existence", check_open_probability(confirm_existence));
     MPTRACK_CHECK_PARAM(where, "delete_existence",
                         check(delete_existence >= T(0) && delete_existence < confirm_existence));
     MPTRACK_CHECK_PARAM(where, "hold_existence",
                         check(hold_existence > T(0) && hold_existence <= confirm_existence));
-    MPTRACK_CHECK_PARAM(where, "delete_window", check(delete_window >= 1 && delete_window <= 8));
+    MPTRACK_CHECK_PARAM(where, "delete_window", check_range(delete_window, 1, 8));
     MPTRACK_CHECK_PARAM(where, "gate_chi2", check_range(gate_chi2, T(1e-3), T(1e4)));
-    MPTRACK_CHECK_PARAM(where, "vb_iterations", check(vb_iterations >= 1 && vb_iterations <= 50));
-    MPTRACK_CHECK_PARAM(where, "bp_max_iterations", check(bp_max_iterations >= 1 && bp_max_iterations <= 1000));
+    MPTRACK_CHECK_PARAM(where, "vb_iterations", check_range(vb_iterations, 1, 50));
+    MPTRACK_CHECK_PARAM(where, "bp_max_iterations", check_range(bp_max_iterations, 1, 1000));
     MPTRACK_CHECK_PARAM(where, "bp_tolerance", check_range(bp_tolerance, T(0), T(1)));
-    MPTRACK_CHECK_PARAM(where, "bp_damping", check(bp_damping >= T(0) && bp_damping < T(1)));
+    MPTRACK_CHECK_PARAM(where, "bp_damping", check_range_below(bp_damping, T(0), T(1)));
     MPTRACK_CHECK_PARAM(where, "group_range_m", check_range(group_range_m, T(0), T(1e7)));
     MPTRACK_CHECK_PARAM(where, "group_range_rate_mps", check_range(group_range_rate_mps, T(0), T(1e5)));
     MPTRACK_CHECK_PARAM(where, "group_azimuth_rad", check_range(group_azimuth_rad, T(0), T(7)));
-    MPTRACK_CHECK_PARAM(where, "min_group_size", check(min_group_size >= 1 && min_group_size <= num_paths));
+    MPTRACK_CHECK_PARAM(where, "min_group_size", check_range(min_group_size, 1, num_paths, "num_paths"));
     MPTRACK_CHECK_PARAM(where, "birth_clutter_belief", check_range(birth_clutter_belief, T(0), T(1)));
     MPTRACK_CHECK_PARAM(where, "birth_max_spread", check_range(birth_max_spread, T(0), T(1e6)));
     MPTRACK_CHECK_PARAM(where, "birth_existence_scale",

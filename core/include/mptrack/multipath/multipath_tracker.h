@@ -90,8 +90,8 @@ class MultipathMfbpTracker {
   /// Checks params (MultipathParams::validate) and num_paths against Caps::kMaxPaths.
   static Status validate(const Params& p, ParamError* where = nullptr) {
     MPTRACK_TRY(p.validate(where));
-    MPTRACK_CHECK_PARAM(where, "num_paths", check(p.num_paths <= kMaxPaths));
-    MPTRACK_CHECK_PARAM(where, "smoothing_lag_scans", check(p.smoothing_lag_scans <= kMaxLag));
+    MPTRACK_CHECK_PARAM(where, "num_paths", check_at_most(p.num_paths, kMaxPaths, "kMaxPaths"));
+    MPTRACK_CHECK_PARAM(where, "smoothing_lag_scans", check_at_most(p.smoothing_lag_scans, kMaxLag, "kMaxSmoothingLag"));
     return Status::kOk;
   }
 

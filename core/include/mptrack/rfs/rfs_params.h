@@ -113,16 +113,16 @@ struct RfsFilterParams {
     ParamError* w = where;
     MPTRACK_TRY(validate_sensor(w));
     MPTRACK_CHECK_PARAM(w, "scan_period_s", check_positive(scan_period_s));
-    MPTRACK_CHECK_PARAM(w, "scan_period_s", check(!(scan_period_s > T(3600))));
+    MPTRACK_CHECK_PARAM(w, "scan_period_s", check_at_most(scan_period_s, T(3600)));
     MPTRACK_CHECK_PARAM(w, "max_gap_s", check_range(max_gap_s, T(1e-3), T(1e6)));
     MPTRACK_CHECK_PARAM(w, "accel_var_m2ps4", check_positive(accel_var_m2ps4));
-    MPTRACK_CHECK_PARAM(w, "accel_var_m2ps4", check(!(accel_var_m2ps4 > kMaxAccelVar)));
+    MPTRACK_CHECK_PARAM(w, "accel_var_m2ps4", check_at_most(accel_var_m2ps4, kMaxAccelVar, "kMaxAccelVar"));
     MPTRACK_CHECK_PARAM(w, "survival_prob", check_open_probability(survival_prob));
     MPTRACK_CHECK_PARAM(w, "birth_rate", check_range(birth_rate, T(1e-6), kMaxRate));
     MPTRACK_CHECK_PARAM(w, "birth_velocity_std_mps",
                         check_range(birth_velocity_std_mps, T(1e-3), kMaxVelocityStdMps));
     MPTRACK_TRY(amplitude.validate(w));
-    MPTRACK_CHECK_PARAM(w, "amplitude.max_amplitude", check(!(amplitude.max_amplitude > kMaxAmplitude)));
+    MPTRACK_CHECK_PARAM(w, "amplitude.max_amplitude", check_at_most(amplitude.max_amplitude, kMaxAmplitude, "kMaxAmplitude"));
     MPTRACK_CHECK_PARAM(w, "target_power_prior",
                         check(target_power_prior > T(1) && !(target_power_prior > kMaxPower)));
     MPTRACK_CHECK_PARAM(w, "target_alpha_prior",
@@ -133,9 +133,9 @@ struct RfsFilterParams {
     MPTRACK_CHECK_PARAM(w, "detection_prob", check_open_probability(detection_prob));
     MPTRACK_TRY(validate_clutter(w));
     MPTRACK_CHECK_PARAM(w, "prune_threshold", check_open_probability(prune_threshold));
-    MPTRACK_CHECK_PARAM(w, "merge_threshold", check(merge_threshold > T(0) && !(merge_threshold > kMaxRate)));
+    MPTRACK_CHECK_PARAM(w, "merge_threshold", check_range_above(merge_threshold, T(0), kMaxRate));
     MPTRACK_CHECK_PARAM(w, "merge_threshold_power",
-                        check(merge_threshold_power > T(0) && !(merge_threshold_power > kMaxRate)));
+                        check_range_above(merge_threshold_power, T(0), kMaxRate));
     MPTRACK_CHECK_PARAM(w, "gate_probability", check_open_probability(gate_probability));
     MPTRACK_CHECK_PARAM(w, "extract_threshold", check_open_probability(extract_threshold));
     MPTRACK_CHECK_PARAM(w, "existence_prune", check_open_probability(existence_prune));
@@ -214,12 +214,12 @@ struct RfsFilterParams {
     MPTRACK_CHECK_PARAM(w, "clutter_alpha_prior",
                         check(clutter_alpha_prior > T(1) && !(clutter_alpha_prior > kMaxPower)));
     MPTRACK_CHECK_PARAM(w, "hotspot_half_width0",
-                        check(hotspot_half_width0 > T(0) && !(hotspot_half_width0 > kMaxCoordM)));
+                        check_range_above(hotspot_half_width0, T(0), kMaxCoordM));
     MPTRACK_CHECK_PARAM(w, "hotspot_half_width1",
-                        check(hotspot_half_width1 > T(0) && !(hotspot_half_width1 > kMaxCoordM)));
-    MPTRACK_CHECK_PARAM(w, "hotspot_min_points", check(hotspot_min_points >= 2 && hotspot_min_points <= 1000));
+                        check_range_above(hotspot_half_width1, T(0), kMaxCoordM));
+    MPTRACK_CHECK_PARAM(w, "hotspot_min_points", check_range(hotspot_min_points, 2, 1000));
     MPTRACK_CHECK_PARAM(w, "hotspot_min_rate",
-                        check(hotspot_min_rate > T(0) && !(hotspot_min_rate > kMaxRate)));
+                        check_range_above(hotspot_min_rate, T(0), kMaxRate));
     return Status::kOk;
   }
 };

@@ -89,8 +89,8 @@ class SblDetector {
   /// max_iterations, the map grid, the chirp within a slot.
   static Status validate(const SblParams& p, ParamError* where = nullptr) {
     MPTRACK_TRY(p.validate(where));
-    MPTRACK_CHECK_PARAM(where, "max_components", check(p.max_components <= Caps::kMaxComponents));
-    MPTRACK_CHECK_PARAM(where, "max_iterations", check(p.max_iterations <= Caps::kMaxIterations));
+    MPTRACK_CHECK_PARAM(where, "max_components", check_at_most(p.max_components, Caps::kMaxComponents, "Caps::kMaxComponents"));
+    MPTRACK_CHECK_PARAM(where, "max_iterations", check_at_most(p.max_iterations, Caps::kMaxIterations, "Caps::kMaxIterations"));
     const double lx = p.chirp_duration_s * p.sample_rate_hz + 0.5;
     MPTRACK_CHECK_PARAM(where, "chirp_duration_s",
                         check(lx >= 1.0 && lx < static_cast<double>(RadarCaps::kNumSamples) + 1.0));

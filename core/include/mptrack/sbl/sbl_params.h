@@ -76,14 +76,14 @@ struct SblParams {
     MPTRACK_CHECK_PARAM(where, "antenna_gain", check_range(antenna_gain, 1e-12, 1e12));
     MPTRACK_CHECK_PARAM(where, "mean_rcs_m2", check_range(mean_rcs_m2, 1e-12, 1e12));
     MPTRACK_CHECK_PARAM(where, "min_range_m", check_range(min_range_m, 0.1, 1e5));
-    MPTRACK_CHECK_PARAM(where, "max_range_m", check(is_finite(max_range_m) && max_range_m > min_range_m));
+    MPTRACK_CHECK_PARAM(where, "max_range_m", check_above(max_range_m, min_range_m, "min_range_m"));
     MPTRACK_CHECK_PARAM(where, "max_abs_bearing_rad", check_range(max_abs_bearing_rad, 1e-3, 1.5));
     MPTRACK_CHECK_PARAM(where, "range_step_m", check_range(range_step_m, 1e-3, 1e3));
     MPTRACK_CHECK_PARAM(where, "sin_step", check_range(sin_step, 1e-4, 1.0));
     MPTRACK_CHECK_PARAM(where, "eta", check_range(eta, 1e-3, 1e6));
-    MPTRACK_CHECK_PARAM(where, "max_components", check(max_components >= 1));
-    MPTRACK_CHECK_PARAM(where, "max_iterations", check(max_iterations >= 1));
-    MPTRACK_CHECK_PARAM(where, "gauss_newton_steps", check(gauss_newton_steps >= 1 && gauss_newton_steps <= 32));
+    MPTRACK_CHECK_PARAM(where, "max_components", check_at_least(max_components, 1));
+    MPTRACK_CHECK_PARAM(where, "max_iterations", check_at_least(max_iterations, 1));
+    MPTRACK_CHECK_PARAM(where, "gauss_newton_steps", check_range(gauss_newton_steps, 1, 32));
     MPTRACK_CHECK_PARAM(where, "tolerance_m", check_range(tolerance_m, 1e-9, 10.0));
     MPTRACK_CHECK_PARAM(where, "max_step_m", check_range(max_step_m, 1e-3, 100.0));
     MPTRACK_CHECK_PARAM(where, "max_abs_sample", check_range(max_abs_sample, 1e-6, 1e9));

@@ -84,22 +84,22 @@ struct VmpParams {
     MPTRACK_CHECK_PARAM(where, "frame_period_s", check_positive(frame_period_s));
     MPTRACK_CHECK_PARAM(where, "max_gap_s", check_range(max_gap_s, 1e-6, 1e6));
     MPTRACK_CHECK_PARAM(where, "min_range_m", check_positive(min_range_m));
-    MPTRACK_CHECK_PARAM(where, "max_range_m", check(is_finite(max_range_m) && max_range_m > min_range_m));
+    MPTRACK_CHECK_PARAM(where, "max_range_m", check_above(max_range_m, min_range_m, "min_range_m"));
     MPTRACK_CHECK_PARAM(where, "max_abs_bearing_rad", check_range(max_abs_bearing_rad, 1e-3, 1.5707));
     MPTRACK_CHECK_PARAM(where, "map_range_step_m", check_positive(map_range_step_m));
     MPTRACK_CHECK_PARAM(where, "map_sin_step", check_range(map_sin_step, 1e-4, 1.0));
-    MPTRACK_CHECK_PARAM(where, "gn_iterations", check(gn_iterations >= 1 && gn_iterations <= 64));
+    MPTRACK_CHECK_PARAM(where, "gn_iterations", check_range(gn_iterations, 1, 64));
     MPTRACK_CHECK_PARAM(where, "gn_max_step_m", check_positive(gn_max_step_m));
     MPTRACK_CHECK_PARAM(where, "gn_tol_m", check_positive(gn_tol_m));
-    MPTRACK_CHECK_PARAM(where, "gn_backtracks", check(gn_backtracks <= 16));
+    MPTRACK_CHECK_PARAM(where, "gn_backtracks", check_at_most(gn_backtracks, 16));
     MPTRACK_CHECK_PARAM(where, "min_message_energy", check_range(min_message_energy, 0.0, 1e6));
     MPTRACK_CHECK_PARAM(where, "min_message_precision", check_positive(min_message_precision));
     MPTRACK_CHECK_PARAM(where, "max_message_precision",
-                        check(is_finite(max_message_precision) && max_message_precision > min_message_precision));
-    MPTRACK_CHECK_PARAM(where, "existence_sweeps", check(existence_sweeps >= 1 && existence_sweeps <= 100));
+                        check_above(max_message_precision, min_message_precision, "min_message_precision"));
+    MPTRACK_CHECK_PARAM(where, "existence_sweeps", check_range(existence_sweeps, 1, 100));
     MPTRACK_CHECK_PARAM(where, "existence_tol", check_positive(existence_tol));
-    MPTRACK_CHECK_PARAM(where, "outer_iterations", check(outer_iterations >= 1 && outer_iterations <= 16));
-    MPTRACK_CHECK_PARAM(where, "max_births_per_frame", check(max_births_per_frame <= 64));
+    MPTRACK_CHECK_PARAM(where, "outer_iterations", check_range(outer_iterations, 1, 16));
+    MPTRACK_CHECK_PARAM(where, "max_births_per_frame", check_at_most(max_births_per_frame, 64));
     MPTRACK_CHECK_PARAM(where, "min_variance", check_positive(min_variance));
     return Status::kOk;
   }

@@ -78,7 +78,7 @@ class VmpTracker {
   /// frame, birth-map grid size, chirp length.
   static Status validate(const Params& p, ParamError* where = nullptr) {
     MPTRACK_TRY(p.validate(where));
-    MPTRACK_CHECK_PARAM(where, "max_births_per_frame", check(p.max_births_per_frame <= Caps::kMaxBirthsPerFrame));
+    MPTRACK_CHECK_PARAM(where, "max_births_per_frame", check_at_most(p.max_births_per_frame, Caps::kMaxBirthsPerFrame, "Caps::kMaxBirthsPerFrame"));
     MPTRACK_CHECK_PARAM(where, "map_range_step_m",
                         check((p.max_range_m - p.min_range_m) / p.map_range_step_m + 1.0 <=
                               static_cast<double>(Caps::kMapRangeCells)));

@@ -50,7 +50,9 @@ class Rng {
   double exponential();
   /// Poisson(mean): Knuth's product method on chunks of mean <= 30 (a sum of
   /// independent Poissons is Poisson), so exp(-chunk) never underflows.
+  /// Means above kMaxPoissonMean (and +inf) draw with kMaxPoissonMean.
   std::uint32_t poisson(double mean);
+  static constexpr double kMaxPoissonMean = 1e7;
   /// Gamma(shape n, scale) for integer n >= 1: a sum of n exponentials.
   double gamma_int(int shape, double scale);
   /// Gamma(shape n, scale) conditioned on X > t, n in {1, 2}, exact:

@@ -176,6 +176,17 @@ struct ScenarioSpec {
 /// positive number" (the JSON loader uses the same paths).
 std::string validate(const ScenarioSpec& spec);
 
+/// Largest clutter Poisson mean per scan a scenario may ask for (times
+/// --clutter-scale: GeneratorOptions): above it a scan's draw alone is
+/// unbounded work, and no tracker's caps come near it.
+inline constexpr double kMaxClutterMeanCount = 1e6;
+
+/// Expected measurements per scan at the largest clutter mean: every clutter
+/// component's mean_count x (1 + |count_sin_amplitude|) x clutter_scale plus
+/// one per target (per propagation path for OTHR). The harness refuses a
+/// scenario whose figure exceeds the trackers' caps by far.
+double expected_measurements_per_scan(const ScenarioSpec& spec, double clutter_scale);
+
 /// Field-by-field equality (exact, bitwise on doubles' values).
 bool operator==(const MotionSegment& a, const MotionSegment& b);
 bool operator==(const TargetSpec& a, const TargetSpec& b);
