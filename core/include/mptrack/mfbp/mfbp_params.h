@@ -176,7 +176,16 @@ struct MfbpParams {
                                       ///< map in known_clutter); validate() rejects the others
   bool clutter_rate_in_da = true;     ///< multiply clutter evidence by lambda_hat
                                       ///< (docs/algorithms/mfbp.md §Departures from the paper)
-  T uniform_rate_per_scan = T(30);    ///< known uniform clutter rate for kKnownRateUniform [-]
+  T uniform_rate_per_scan = T(30);    ///< known uniform clutter rate for kKnownRateUniform;
+                                      ///< also the Dirichlet prior of the estimated uniform
+                                      ///< share. 0 is valid (a scene of Gaussian clutter
+                                      ///< only): the floor below applies [-]
+  T uniform_rate_floor_per_scan = T(1);  ///< Ours. The uniform clutter rate (known or prior,
+                                         ///< here and in known_clutter) is used as at least
+                                         ///< this, so that the uniform component stays the
+                                         ///< catch-all of a measurement nothing else explains
+                                         ///< and its log-rate is finite (effective_uniform_rate).
+                                         ///< Rates at or above it are used unchanged [-]
   T nw_forgetting_factor = T(0.99);   ///< xi_W [-]
   NwForgetting nw_forgetting = NwForgetting::kMeanPreserving;
   T dirichlet_kappa = T(5);           ///< kappa [-]
@@ -236,8 +245,17 @@ struct MfbpParams {
   Status validate_clutter_grid(T span_r, T span_a, T max_cells_per_axis, T max_seed_cells,
                                T max_cell_volume_ratio, T max_seed_factor, T max_count,
                                ParamError* w) const;
-  Status validate_known_clutter(T min_count, T max_count, T max_power, ParamError* w) const;
+  Status validate_known_clutter(T max_count, T max_power, ParamError* w) const;
 };
+
+/// A uniform clutter rate as the tracker uses it: at least
+/// uniform_rate_floor_per_scan (a scene without uniform clutter, rate 0,
+/// keeps a weak catch-all uniform component; docs/algorithms/mfbp.md
+/// §Clutter chain). Rates at or above the floor are returned unchanged.
+template <class T>
+T effective_uniform_rate(T rate_per_scan, const MfbpParams<T>& p) {
+  return rate_per_scan < p.uniform_rate_floor_per_scan ? p.uniform_rate_floor_per_scan : rate_per_scan;
+}
 
 /// The paper's Sec. IV-A configuration with the corrections of
 /// docs/algorithms/mfbp.md §Departures from the paper: the "mfbp" tracker
@@ -317,7 +335,9 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "bp_damping",
                       check(is_finite(bp_damping) && bp_damping >= T(0) && bp_damping < T(1)));
   MPTRACK_CHECK_PARAM(w, "w_min", check_positive(w_min));
-  MPTRACK_CHECK_PARAM(w, "uniform_rate_per_scan", check_range(uniform_rate_per_scan, kMinCount, kMaxCount));
+  MPTRACK_CHECK_PARAM(w, "uniform_rate_per_scan", check_range(uniform_rate_per_scan, T(0), kMaxCount));
+  MPTRACK_CHECK_PARAM(w, "uniform_rate_floor_per_scan",
+                      check_range(uniform_rate_floor_per_scan, kMinCount, kMaxCount));
   MPTRACK_CHECK_PARAM(w, "nw_forgetting_factor",
                       check(is_finite(nw_forgetting_factor) && nw_forgetting_factor > T(0) &&
                             !(nw_forgetting_factor > T(1))));
@@ -343,7 +363,7 @@ Status MfbpParams<T>::validate(ParamError* where) const {
                       check(clutter_mode == ClutterMode::kEstimatedMap ||
                             clutter_mode == ClutterMode::kKnownRateUniform ||
                             clutter_mode == ClutterMode::kKnownMap));
-  return validate_known_clutter(kMinCount, kMaxCount, kMaxPower, w);
+  return validate_known_clutter(kMaxCount, kMaxPower, w);
 }
 
 /// The clutter-birth grid fields (see validate()).
@@ -371,13 +391,13 @@ Status MfbpParams<T>::validate_clutter_grid(T span_r, T span_a, T max_cells_per_
 
 /// known_clutter (used by ClutterMode::kKnownMap only; see validate()).
 template <class T>
-Status MfbpParams<T>::validate_known_clutter(T min_count, T max_count, T max_power, ParamError* w) const {
+Status MfbpParams<T>::validate_known_clutter(T max_count, T max_power, ParamError* w) const {
   const auto& kc = known_clutter;
   MPTRACK_CHECK_PARAM(w, "known_clutter.num_components",
                       check(kc.num_components <= kMaxKnownClutterComponents));
   if (clutter_mode != ClutterMode::kKnownMap) return Status::kOk;
   MPTRACK_CHECK_PARAM(w, "known_clutter.uniform_rate_per_scan",
-                      check_range(kc.uniform_rate_per_scan, min_count, max_count));
+                      check_range(kc.uniform_rate_per_scan, T(0), max_count));
   MPTRACK_CHECK_PARAM(w, "known_clutter.uniform_cnr", check_range(kc.uniform_cnr, T(0), max_power));
   for (std::size_t c = 0; c < kc.num_components; ++c) {
     const auto& comp = kc.components[c];

@@ -142,8 +142,8 @@ class MfbpTracker {
     // Clutter priors at "scan -1".
     clutter_.uniform.ig0.a = params.uniform_cnr_prior_shape;
     clutter_.uniform.ig0.b = (T(1) + params.uniform_cnr_prior) * (params.uniform_cnr_prior_shape - T(1));
-    clutter_.uniform.alpha0 = params.uniform_rate_per_scan;
-    clutter_.m_prev = params.uniform_rate_per_scan;
+    clutter_.uniform.alpha0 = effective_uniform_rate(params.uniform_rate_per_scan, params);
+    clutter_.m_prev = effective_uniform_rate(params.uniform_rate_per_scan, params);
     initialized_ = true;
     return Status::kOk;
   }
