@@ -112,7 +112,37 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
                                {"std_confirmed", s.confirmed_std_per_scan},
                                {"mean_truths", s.truths_per_scan}};
   j["object_rmse_m"] = object_rmse_json(s);
+  add_track_scores_json(s, j);
   return j;
+}
+
+void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
+  const TrackScoreTotals& t = s.track_scores;
+  // The seed 002 / seed 003 names at the top level (docs/algorithms/metrics.md
+  // §Track scores); top-level "nft" stays seed 000's false tracks per scan,
+  // the per-run count of seed 002 is track_scores.nft.
+  j["nvt"] = t.nvt();
+  j["tpd"] = t.tpd();
+  j["ttl"] = t.ttl_scans();
+  j["aee_range_km"] = t.aee_range_m() / 1e3;
+  j["aee_bearing_mrad"] = t.aee_bearing_rad() * 1e3;
+  j["mospa"] = s.mean_ospa;
+  j["ids"] = t.per_target(t.id_switches);
+  j["frag"] = t.per_target(t.fragmentations);
+  j["track_scores"] = {{"gate_m", s.scoring.gate_m},
+                       {"min_track_scans", s.scoring.min_track_scans},
+                       {"nvt", t.nvt()},
+                       {"nft", t.nft()},
+                       {"valid_tracks_per_run", t.runs > 0 ? static_cast<double>(t.valid_tracks) / t.runs : 0.0},
+                       {"tpd", t.tpd()},
+                       {"ttl_scans", t.ttl_scans()},
+                       {"targets", t.targets},
+                       {"targets_never_tracked", t.targets - t.targets_tracked},
+                       {"aee_range_m", t.aee_range_m()},
+                       {"aee_bearing_mrad", t.aee_bearing_rad() * 1e3},
+                       {"id_switches_per_target", t.per_target(t.id_switches)},
+                       {"fragmentations_per_target", t.per_target(t.fragmentations)},
+                       {"track_breaks_per_target", t.per_target(t.track_breaks)}};
 }
 
 nlohmann::ordered_json object_rmse_json(const Summary& s) {

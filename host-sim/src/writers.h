@@ -40,6 +40,8 @@ nlohmann::ordered_json summary_to_json(const Summary& s);
 /// Per-object RMSE block of summary.json and compare.json: p50, p90, max,
 /// objects, never_matched and the sorted values (the empirical CDF).
 nlohmann::ordered_json object_rmse_json(const Summary& s);
+/// Adds the track scores (track_scoring.h) of `s` to its summary.json object.
+void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j);
 void write_summary_json(const Summary& s, const std::string& path);
 
 }  // namespace mptrack::sim

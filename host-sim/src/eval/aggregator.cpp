@@ -105,6 +105,7 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   }
   tracks_found_ += static_cast<double>(found.size());
   add_object_errors(scans, metrics);
+  sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring));
 }
 
 void Aggregator::add_object_errors(const std::vector<scenario::SimScan>& scans,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "eval/scan_evaluator.h"
+#include "eval/track_scoring.h"
 #include "mptrack/scenario/generator.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
@@ -42,6 +43,7 @@ struct SummaryHeader {
   std::uint64_t seed = 0;
   double clutter_scale = 1.0;
   std::uint32_t eval_first_scan = 0, eval_last_scan = 0;
+  TrackScoringParams scoring;   ///< how track_scores matches tracks to targets
 };
 
 struct Summary : SummaryHeader {
@@ -73,6 +75,7 @@ struct Summary : SummaryHeader {
   /// the empirical CDF of seed 004 Fig. 5 [m].
   std::vector<double> object_rmse_m;
   std::uint64_t objects_never_matched = 0;  ///< (run, target) pairs alive but never matched within c
+  TrackScoreTotals track_scores;        ///< NVT, TPD, NFT per run, TTL, AEE, IDS, Frag (track_scoring.h)
   std::uint64_t step_errors = 0;        ///< step()/flush() calls returning an error (not kOk, kPartial, kCapacityExceeded)
   std::uint64_t steps_partial = 0;      ///< kPartial: some measurements rejected (see counters)
   std::uint64_t steps_capacity = 0;     ///< kCapacityExceeded: an internal cap was hit (see counters)

@@ -95,7 +95,8 @@ std::vector<Summary> run_loop(ScanSource& source, const LoopConfig& cfg, const s
   std::vector<Aggregator> aggregators;
   for (const std::string& name : cfg.trackers) {
     aggregators.emplace_back(SummaryHeader{spec.name, name, cfg.runs, spec.num_scans, cfg.seed, cfg.clutter_scale,
-                                           spec.eval_first_scan, spec.eval_last_scan});
+                                           spec.eval_first_scan, spec.eval_last_scan,
+                                           track_scoring_params(spec, cfg.ospa_cutoff_m)});
   }
   Progress progress(cfg.progress_label,
                     static_cast<std::uint64_t>(cfg.runs) * spec.num_scans * cfg.trackers.size(), cfg.progress);

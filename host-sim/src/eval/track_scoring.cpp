@@ -1,0 +1,203 @@
+// Track scores of a run; definitions in docs/algorithms/metrics.md §Track scores.
+#include "eval/track_scoring.h"
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "mptrack/metrics/assignment.h"
+
+namespace mptrack::sim {
+
+namespace {
+
+constexpr std::size_t kMaxScored = 256;
+constexpr double kTwoPi = 6.283185307179586;
+constexpr std::uint32_t kNoTarget = 0xffffffffU;
+
+using Solver = AssignmentSolver<double, kMaxScored>;
+
+/// track id -> target id (or kNoTarget) for one scan's confirmed tracks.
+using ScanAssignment = std::map<std::uint32_t, std::uint32_t>;
+
+/// Optimal assignment of confirmed tracks to truths, cost min(d, gate):
+/// pairs at or beyond the gate are then dropped (OSPA's cut-off trick, which
+/// never trades a within-gate pair for a cheaper out-of-gate one).
+ScanAssignment assign_scan(const scenario::SimScan& scan, const EstimateOut& est, double gate_m, Solver& solver) {
+  std::vector<const TrackOut*> tracks;
+  for (const TrackOut& t : est.tracks) {
+    if (t.confirmed) tracks.push_back(&t);
+  }
+  ScanAssignment out;
+  for (const TrackOut* t : tracks) out[t->id] = kNoTarget;
+  if (tracks.empty() || scan.truth.empty()) return out;
+  if (solver.resize(tracks.size(), scan.truth.size()) != Status::kOk) {
+    throw std::runtime_error("track scoring: more than 256 tracks or targets in a scan");
+  }
+  for (std::size_t i = 0; i < tracks.size(); ++i) {
+    for (std::size_t j = 0; j < scan.truth.size(); ++j) {
+      const double d = std::hypot(tracks[i]->px - scan.truth[j].x.px, tracks[i]->py - scan.truth[j].x.py);
+      solver.cost(i, j) = std::min(d, gate_m);
+    }
+  }
+  if (solver.solve() != Status::kOk) throw std::runtime_error("track scoring: assignment failed");
+  for (std::size_t i = 0; i < tracks.size(); ++i) {
+    const std::int32_t j = solver.row_assignment(i);
+    if (j >= 0 && solver.cost(i, static_cast<std::size_t>(j)) < gate_m) {
+      out[tracks[i]->id] = scan.truth[static_cast<std::size_t>(j)].target_id;
+    }
+  }
+  return out;
+}
+
+struct TrackTally {
+  std::uint32_t scans = 0;                       ///< confirmed scans
+  std::map<std::uint32_t, std::uint32_t> hits;   ///< target id -> scans assigned to it
+};
+
+/// Marks each scored track valid (assigned to its most frequent target for at
+/// least half of its confirmed scans) or false; returns id -> valid.
+std::map<std::uint32_t, bool> classify_tracks(const std::vector<ScanAssignment>& per_scan,
+                                              std::uint32_t min_scans, RunTrackScore& run) {
+  std::map<std::uint32_t, TrackTally> tally;
+  for (const ScanAssignment& a : per_scan) {
+    for (const auto& [track, target] : a) {
+      TrackTally& t = tally[track];
+      ++t.scans;
+      if (target != kNoTarget) ++t.hits[target];
+    }
+  }
+  std::map<std::uint32_t, bool> valid;
+  std::map<std::uint32_t, bool> followed;  // target id -> some valid track follows it
+  for (const auto& [track, t] : tally) {
+    if (t.scans < min_scans) continue;
+    ++run.scored_tracks;
+    std::uint32_t best_target = kNoTarget, best_hits = 0;
+    for (const auto& [target, hits] : t.hits) {
+      if (hits > best_hits) best_target = target, best_hits = hits;
+    }
+    const bool is_valid = 2 * best_hits >= t.scans && best_hits > 0;
+    valid[track] = is_valid;
+    if (is_valid) {
+      ++run.valid_tracks;
+      followed[best_target] = true;
+    } else {
+      ++run.false_tracks;
+    }
+  }
+  run.targets_with_valid_track = static_cast<std::uint32_t>(followed.size());
+  return valid;
+}
+
+/// Ground range and bearing of a position about the sensor at the origin.
+void add_polar_error(const scenario::KinematicState& truth, const TrackOut& track, TargetScore& s) {
+  s.abs_range_err_sum_m += std::fabs(std::hypot(track.px, track.py) - std::hypot(truth.px, truth.py));
+  const double d = std::atan2(track.py, track.px) - std::atan2(truth.py, truth.px);
+  s.abs_bearing_err_sum_rad += std::fabs(std::remainder(d, kTwoPi));
+}
+
+/// Follows one target through the run: coverage, first coverage, switches.
+struct TargetFollower {
+  TargetScore score;
+  std::uint32_t last_track = 0;
+  bool has_last = false, covered_last_scan = false;
+
+  void scan(std::uint32_t k, const scenario::TruthState& truth, const TrackOut* track, const ScanAssignment& now) {
+    ++score.alive_scans;
+    if (track == nullptr) {
+      covered_last_scan = false;
+      return;
+    }
+    ++score.covered_scans;
+    if (score.first_covered_scan < 0) score.first_covered_scan = static_cast<std::int32_t>(k);
+    if (has_last && track->id != last_track) {
+      ++score.id_switches;
+      if (now.count(last_track) == 0) ++score.track_breaks;
+    }
+    if (has_last && !covered_last_scan) ++score.fragmentations;
+    last_track = track->id;
+    has_last = true;
+    covered_last_scan = true;
+    add_polar_error(truth.x, *track, score);
+  }
+};
+
+}  // namespace
+
+TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, double ospa_cutoff_m) {
+  TrackScoringParams p;
+  p.gate_m = ospa_cutoff_m;
+  p.min_track_scans = spec.space == scenario::MeasurementSpace::kOthr ? 5U : 1U;
+  return p;
+}
+
+RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
+                        const TrackScoringParams& params) {
+  const std::size_t n = std::min(scans.size(), by_scan.size());
+  auto solver = std::make_unique<Solver>();  // a 256 x 256 cost matrix: heap, not stack
+  std::vector<ScanAssignment> per_scan(n);
+  for (std::size_t i = 0; i < n; ++i) per_scan[i] = assign_scan(scans[i], by_scan[i], params.gate_m, *solver);
+
+  RunTrackScore run;
+  const std::map<std::uint32_t, bool> valid = classify_tracks(per_scan, params.min_track_scans, run);
+  std::map<std::uint32_t, std::size_t> index;  // target id -> followers slot
+  std::vector<TargetFollower> followers;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t k = static_cast<std::uint32_t>(i + 1);
+    for (const scenario::TruthState& truth : scans[i].truth) {
+      if (index.count(truth.target_id) == 0) {
+        index[truth.target_id] = followers.size();
+        followers.emplace_back();
+        followers.back().score.target_id = truth.target_id;
+        followers.back().score.birth_scan = k;
+      }
+      const TrackOut* covering = nullptr;
+      for (const TrackOut& t : by_scan[i].tracks) {
+        const auto a = per_scan[i].find(t.id);
+        const auto v = valid.find(t.id);
+        if (t.confirmed && a != per_scan[i].end() && a->second == truth.target_id && v != valid.end() && v->second) {
+          covering = &t;
+        }
+      }
+      followers[index[truth.target_id]].scan(k, truth, covering, per_scan[i]);
+    }
+  }
+  for (const TargetFollower& f : followers) run.targets.push_back(f.score);
+  return run;
+}
+
+void TrackScoreTotals::add(const RunTrackScore& run) {
+  ++runs;
+  valid_tracks += run.valid_tracks;
+  false_tracks += run.false_tracks;
+  targets_with_valid_track += run.targets_with_valid_track;
+  for (const TargetScore& t : run.targets) {
+    ++targets;
+    alive_scans += t.alive_scans;
+    covered_scans += t.covered_scans;
+    if (t.first_covered_scan >= 0) {
+      ++targets_tracked;
+      latency_scans += static_cast<std::uint64_t>(t.first_covered_scan) - t.birth_scan;
+    }
+    id_switches += t.id_switches;
+    fragmentations += t.fragmentations;
+    track_breaks += t.track_breaks;
+    abs_range_err_sum_m += t.abs_range_err_sum_m;
+    abs_bearing_err_sum_rad += t.abs_bearing_err_sum_rad;
+  }
+}
+
+namespace {
+double ratio(double num, std::uint64_t den) { return den > 0 ? num / static_cast<double>(den) : 0.0; }
+}  // namespace
+
+double TrackScoreTotals::nvt() const { return ratio(static_cast<double>(targets_with_valid_track), runs); }
+double TrackScoreTotals::nft() const { return ratio(static_cast<double>(false_tracks), runs); }
+double TrackScoreTotals::tpd() const { return ratio(static_cast<double>(covered_scans), alive_scans); }
+double TrackScoreTotals::ttl_scans() const { return ratio(static_cast<double>(latency_scans), targets_tracked); }
+double TrackScoreTotals::aee_range_m() const { return ratio(abs_range_err_sum_m, covered_scans); }
+double TrackScoreTotals::aee_bearing_rad() const { return ratio(abs_bearing_err_sum_rad, covered_scans); }
+double TrackScoreTotals::per_target(std::uint64_t count) const { return ratio(static_cast<double>(count), targets); }
+
+}  // namespace mptrack::sim

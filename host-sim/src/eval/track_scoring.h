@@ -1,0 +1,80 @@
+// Track-level scores of one run: which confirmed track follows which target
+// over the whole run, and what that says about the tracker, the metrics
+// tracking papers report beyond OSPA (docs/algorithms/metrics.md §Track
+// scores): valid and false tracks (NVT, NFT), track probability of detection
+// (TPD), tentative track latency (TTL, the confirmation delay after birth),
+// errors in ground range and bearing (AEE), identity switches, fragmentations
+// and track breaks. seed 002 Sec. IV-B reports NVT, TPD, NFT, TTL and AEE
+// (definitions of Gorji et al., FUSION 2011); seed 003 reports IDS and Frag.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mptrack/scenario/generator.h"
+#include "tracker_adapter.h"
+
+namespace mptrack::sim {
+
+struct TrackScoringParams {
+  double gate_m = 0.0;                ///< a track scores a target only within this distance [m]
+  std::uint32_t min_track_scans = 1;  ///< shorter confirmed tracks are ignored (seed 002: 5)
+};
+
+/// The scenario's scoring: gate = the OSPA cut-off c of the run; tracks of
+/// OTHR scenarios count from 5 confirmed scans (seed 002 Sec. IV-B), others
+/// from 1.
+TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, double ospa_cutoff_m);
+
+/// One target over one run.
+struct TargetScore {
+  std::uint32_t target_id = 0;
+  std::uint32_t birth_scan = 0;      ///< first scan it is alive (1-based)
+  std::uint32_t alive_scans = 0;
+  std::uint32_t covered_scans = 0;   ///< scans a scored (non-false) track was assigned to it
+  std::int32_t first_covered_scan = -1;  ///< -1: never tracked
+  std::uint32_t id_switches = 0;     ///< its assigned track id changed (from the last one it had)
+  std::uint32_t fragmentations = 0;  ///< coverage resumed after an interruption
+  std::uint32_t track_breaks = 0;    ///< id changed and the previous track no longer existed
+  double abs_range_err_sum_m = 0.0;      ///< sum over covered scans of |ground range error| [m]
+  double abs_bearing_err_sum_rad = 0.0;  ///< sum over covered scans of |bearing error| [rad]
+};
+
+/// Everything scored in one run.
+struct RunTrackScore {
+  std::vector<TargetScore> targets;   ///< in order of first appearance
+  std::uint32_t scored_tracks = 0;    ///< confirmed for at least min_track_scans scans
+  std::uint32_t valid_tracks = 0;     ///< scored tracks assigned to one target for at least half their scans
+  std::uint32_t false_tracks = 0;     ///< scored tracks that are not valid (clutter, ghosts)
+  std::uint32_t targets_with_valid_track = 0;  ///< NVT of the run: distinct targets some valid track follows
+};
+
+/// Scores a run: scans[k-1] holds the truth of scan k, by_scan[k-1] the
+/// tracker's estimate (only confirmed tracks count). Each scan matches
+/// confirmed tracks to targets by an optimal assignment of Euclidean
+/// distance gated at params.gate_m. Throws std::runtime_error if a scan has
+/// more than 256 tracks or targets.
+RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
+                        const TrackScoringParams& params);
+
+/// Totals over runs; the means scripts read from summary.json.
+struct TrackScoreTotals {
+  std::uint32_t runs = 0;
+  std::uint64_t targets = 0, targets_tracked = 0;  ///< (run, target) pairs, and those ever covered
+  std::uint64_t alive_scans = 0, covered_scans = 0;
+  std::uint64_t latency_scans = 0;                 ///< sum of first_covered - birth over tracked targets
+  std::uint64_t valid_tracks = 0, false_tracks = 0, targets_with_valid_track = 0;
+  std::uint64_t id_switches = 0, fragmentations = 0, track_breaks = 0;
+  double abs_range_err_sum_m = 0.0, abs_bearing_err_sum_rad = 0.0;
+
+  void add(const RunTrackScore& run);
+  double nvt() const;                ///< targets with a valid track, mean per run
+  double nft() const;                ///< false tracks, mean per run
+  double tpd() const;                ///< covered / alive target-scans
+  double ttl_scans() const;          ///< mean scans from birth to first coverage (tracked targets)
+  double aee_range_m() const;        ///< mean |ground range error| over covered target-scans [m]
+  double aee_bearing_rad() const;    ///< mean |bearing error| over covered target-scans [rad]
+  double per_target(std::uint64_t count) const;  ///< count / targets (0 if none)
+};
+
+}  // namespace mptrack::sim

@@ -1,0 +1,203 @@
+// Track scores (host-sim/src/eval/track_scoring.h) on hand-built runs: one
+// behaviour per case, expected values counted by hand.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "eval/track_scoring.h"
+#include "sim_test_truth.h"
+
+using namespace mptrack::sim;
+namespace sc = mptrack::scenario;
+using sim_test::truth_at;
+
+namespace {
+
+TrackOut track_at(std::uint32_t id, double x, double y, bool confirmed = true) {
+  TrackOut t;
+  t.id = id;
+  t.px = x;
+  t.py = y;
+  t.confirmed = confirmed;
+  return t;
+}
+
+/// A run of n scans: truth and estimates filled in by the cases.
+struct Run {
+  std::vector<sc::SimScan> scans;
+  std::vector<EstimateOut> est;
+  explicit Run(std::size_t n) : scans(n), est(n) {
+    for (std::size_t i = 0; i < n; ++i) scans[i].scan = est[i].scan = static_cast<std::uint32_t>(i + 1);
+  }
+  void target(std::uint32_t k, std::uint32_t id, double x, double y) { scans[k - 1].truth.push_back(truth_at(id, x, y, -1)); }
+  void track(std::uint32_t k, std::uint32_t id, double x, double y, bool confirmed = true) {
+    est[k - 1].tracks.push_back(track_at(id, x, y, confirmed));
+  }
+};
+
+TrackScoringParams gate(double gate_m, std::uint32_t min_scans = 1) {
+  TrackScoringParams p;
+  p.gate_m = gate_m;
+  p.min_track_scans = min_scans;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("track scoring: a target tracked from its second scan has TPD 3/4 and a latency of 1 scan") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0, 0.0);
+  for (std::uint32_t k = 2; k <= 4; ++k) r.track(k, 7, 1001.0, 0.0);
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(50.0)));
+  CHECK(t.tpd() == doctest::Approx(0.75));
+  CHECK(t.ttl_scans() == doctest::Approx(1.0));
+  CHECK(t.nvt() == doctest::Approx(1.0));
+  CHECK(t.nft() == doctest::Approx(0.0));
+  CHECK(t.id_switches == 0);
+}
+
+TEST_CASE("track scoring: a confirmed track far from every target is a false track") {
+  Run r(3);
+  for (std::uint32_t k = 1; k <= 3; ++k) {
+    r.target(k, 1, 0.0, 0.0);
+    r.track(k, 9, 5000.0, 0.0);
+  }
+  const RunTrackScore s = score_run(r.scans, r.est, gate(50.0));
+  CHECK(s.false_tracks == 1);
+  CHECK(s.valid_tracks == 0);
+  CHECK(s.targets_with_valid_track == 0);
+  REQUIRE(s.targets.size() == 1);
+  CHECK(s.targets[0].covered_scans == 0);
+  CHECK(s.targets[0].first_covered_scan == -1);
+}
+
+TEST_CASE("track scoring: tracks shorter than min_track_scans are not scored") {
+  Run r(3);
+  for (std::uint32_t k = 1; k <= 3; ++k) r.track(k, 9, 5000.0, 0.0);
+  CHECK(score_run(r.scans, r.est, gate(50.0, 4)).scored_tracks == 0);
+  CHECK(score_run(r.scans, r.est, gate(50.0, 3)).scored_tracks == 1);
+}
+
+TEST_CASE("track scoring: tentative tracks are ignored") {
+  Run r(2);
+  for (std::uint32_t k = 1; k <= 2; ++k) {
+    r.target(k, 1, 0.0, 0.0);
+    r.track(k, 3, 0.0, 0.0, false);
+  }
+  const RunTrackScore s = score_run(r.scans, r.est, gate(50.0));
+  CHECK(s.scored_tracks == 0);
+  CHECK(s.targets[0].covered_scans == 0);
+}
+
+TEST_CASE("track scoring: a track at the gate distance does not cover its target") {
+  Run r(1);
+  r.target(1, 1, 0.0, 0.0);
+  r.track(1, 3, 50.0, 0.0);
+  CHECK(score_run(r.scans, r.est, gate(50.0)).targets[0].covered_scans == 0);
+  CHECK(score_run(r.scans, r.est, gate(50.5)).targets[0].covered_scans == 1);
+}
+
+TEST_CASE("track scoring: a track on its target for 1 of 3 scans is false, for 2 of 3 valid") {
+  Run r(3);
+  for (std::uint32_t k = 1; k <= 3; ++k) r.target(k, 1, 0.0, 0.0);
+  r.track(1, 5, 0.0, 0.0);
+  r.track(2, 5, 900.0, 0.0);
+  r.track(3, 5, 900.0, 0.0);
+  CHECK(score_run(r.scans, r.est, gate(50.0)).false_tracks == 1);
+  r.est[1].tracks[0].px = 0.0;
+  CHECK(score_run(r.scans, r.est, gate(50.0)).valid_tracks == 1);
+}
+
+TEST_CASE("track scoring: a track that ends and a new id that takes over is one switch and one break") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 0.0, 0.0);
+  r.track(1, 1, 0.0, 0.0);
+  r.track(2, 1, 0.0, 0.0);
+  r.track(3, 2, 0.0, 0.0);
+  r.track(4, 2, 0.0, 0.0);
+  const TargetScore t = score_run(r.scans, r.est, gate(50.0)).targets.at(0);
+  CHECK(t.id_switches == 1);
+  CHECK(t.track_breaks == 1);
+  CHECK(t.fragmentations == 0);
+  CHECK(t.covered_scans == 4);
+}
+
+TEST_CASE("track scoring: two tracks that swap targets are an identity switch on each, no break") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) {
+    r.target(k, 1, 0.0, 0.0);
+    r.target(k, 2, 1000.0, 0.0);
+    const bool swapped = k >= 4;  // 3 of 4 scans on the first target: both tracks stay valid
+    r.track(k, 11, swapped ? 1000.0 : 0.0, 0.0);
+    r.track(k, 12, swapped ? 0.0 : 1000.0, 0.0);
+  }
+  const RunTrackScore s = score_run(r.scans, r.est, gate(50.0));
+  REQUIRE(s.targets.size() == 2);
+  CHECK(s.targets[0].id_switches == 1);
+  CHECK(s.targets[1].id_switches == 1);
+  CHECK(s.targets[0].track_breaks == 0);
+  CHECK(s.targets[1].track_breaks == 0);
+  CHECK(s.valid_tracks == 2);
+}
+
+TEST_CASE("track scoring: coverage that resumes after a gap is one fragmentation") {
+  Run r(3);
+  for (std::uint32_t k = 1; k <= 3; ++k) r.target(k, 1, 0.0, 0.0);
+  r.track(1, 4, 0.0, 0.0);
+  r.track(2, 4, 0.0, 0.0, false);  // not confirmed at scan 2
+  r.track(3, 4, 0.0, 0.0);
+  const TargetScore t = score_run(r.scans, r.est, gate(50.0)).targets.at(0);
+  CHECK(t.fragmentations == 1);
+  CHECK(t.id_switches == 0);
+  CHECK(t.covered_scans == 2);
+}
+
+TEST_CASE("track scoring: ground range and bearing errors are measured about the origin") {
+  Run r(1);
+  r.target(1, 1, 10000.0, 0.0);
+  const double bearing = 0.002;  // rad
+  r.track(1, 3, 10100.0 * std::cos(bearing), 10100.0 * std::sin(bearing));
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(500.0)));
+  CHECK(t.aee_range_m() == doctest::Approx(100.0).epsilon(1e-9));
+  CHECK(t.aee_bearing_rad() == doctest::Approx(bearing).epsilon(1e-9));
+}
+
+TEST_CASE("track scoring: bearing errors wrap across +-pi") {
+  Run r(1);
+  r.target(1, 1, -10000.0, 1e-9);   // bearing just below +pi
+  r.track(1, 3, -10000.0, -1e-9);   // bearing just above -pi
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(50.0)));
+  CHECK(t.aee_bearing_rad() == doctest::Approx(2e-13).epsilon(1e-3));
+}
+
+TEST_CASE("track scoring totals: NVT and NFT are per-run means, TPD pools target-scans") {
+  Run a(2);
+  Run b(2);
+  for (std::uint32_t k = 1; k <= 2; ++k) {
+    a.target(k, 1, 0.0, 0.0);
+    a.track(k, 1, 0.0, 0.0);  // run a: tracked both scans
+    b.target(k, 1, 0.0, 0.0);
+    b.track(k, 8, 700.0, 0.0);  // run b: one false track, target missed
+  }
+  TrackScoreTotals t;
+  t.add(score_run(a.scans, a.est, gate(50.0)));
+  t.add(score_run(b.scans, b.est, gate(50.0)));
+  CHECK(t.nvt() == doctest::Approx(0.5));
+  CHECK(t.nft() == doctest::Approx(0.5));
+  CHECK(t.tpd() == doctest::Approx(0.5));
+  CHECK(t.targets_tracked == 1);
+}
+
+TEST_CASE("track scoring params: OTHR scenarios count tracks from 5 scans, gate = OSPA c") {
+  sc::ScenarioSpec spec;
+  spec.space = sc::MeasurementSpace::kOthr;
+  const TrackScoringParams p = track_scoring_params(spec, 20000.0);
+  CHECK(p.min_track_scans == 5);
+  CHECK(p.gate_m == 20000.0);
+  spec.space = sc::MeasurementSpace::kPolar;
+  CHECK(track_scoring_params(spec, 631.0).min_track_scans == 1);
+}
