@@ -212,6 +212,14 @@ struct MfbpParams {
                                          ///< real targets cannot be born: S2 OSPA 122.7 m vs 89.9
                                          ///< m at 0.9 (docs/results/seed000-s1.md). Lower values
                                          ///< also block targets inside chaff.
+  T birth_amplitude_tail = T(0.2);    ///< Ours. A measurement that fails the component-share
+                                      ///< test above may still seed a track if its amplitude is
+                                      ///< this unlikely under every Gaussian component whose gate
+                                      ///< holds it: P(u > m^2 | u > d^2) at the component's mean
+                                      ///< CNR (track_birth.h, amplitude_tail; docs/algorithms/
+                                      ///< mfbp.md §Birth). 0 = off (the birth path of before) [-]
+  std::size_t birth_max_in_clutter = 3;  ///< Ours. Births per window whose points passed only
+                                         ///< by that amplitude test (inside Gaussian clutter)
   T confirm_threshold = T(0.75);      ///< confirm when b_s(1) >= this at any window scan [-]
   T delete_threshold = T(0.5);        ///< delete after delete_run scans with b_s(1) below [-]
   std::size_t delete_run = 5;         ///< consecutive low-visibility scans before deletion. Ours:
@@ -352,6 +360,8 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "birth_max_per_window", check(birth_max_per_window >= 1));
   MPTRACK_CHECK_PARAM(w, "unexplained_threshold", check_open_probability(unexplained_threshold));
   MPTRACK_CHECK_PARAM(w, "birth_max_component_share", check_range(birth_max_component_share, T(0), T(1)));
+  MPTRACK_CHECK_PARAM(w, "birth_amplitude_tail",
+                      check(birth_amplitude_tail >= T(0) && birth_amplitude_tail < T(1)));
   MPTRACK_CHECK_PARAM(w, "confirm_threshold", check_open_probability(confirm_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_threshold", check_open_probability(delete_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_run", check(delete_run >= 1));

@@ -50,9 +50,12 @@
 //     measurements per scan (association_cap_hits counts the dropped
 //     pairs once per window that associates the scan; step returns
 //     kCapacityExceeded);
-//   * tracks: births beyond kMaxTargets live tracks are refused
-//     (track_cap_hits); components beyond kMaxClutterComponents likewise
-//     (clutter_cap_hits); both make step return kCapacityExceeded;
+//   * tracks: a birth that finds every slot taken evicts the least likely
+//     tentative track if that one is less likely than a newborn
+//     (tentative_evicted; not a cap hit); otherwise it is refused
+//     (track_cap_hits). A confirmed track is never evicted. Components
+//     beyond kMaxClutterComponents are refused (clutter_cap_hits); both
+//     refusals make step return kCapacityExceeded;
 //   * birth candidates: init() refuses birth_max_per_window above
 //     Caps::kMaxBirthCandidates (kInvalidArgument).
 #pragma once
@@ -268,7 +271,7 @@ class MfbpTracker {
   }
 
   void spawn_tracks(std::size_t n) {
-    track_spawner_.spawn(n, store_, tracks_, params_, model_, next_track_id_, counters_);
+    track_spawner_.spawn(n, store_, tracks_, clutter_, params_, model_, next_track_id_, counters_);
   }
 
   // Second birth pass (our choice, docs/algorithms/mfbp.md §Departures):
