@@ -56,6 +56,7 @@ const Count kCounts[] = {
     {"birth_max_per_window", [](P& p) -> std::size_t& { return p.birth_max_per_window; }},
     {"tentative_timeout_scans", [](P& p) -> std::size_t& { return p.tentative_timeout_scans; }},
     {"birth_max_in_clutter", [](P& p) -> std::size_t& { return p.birth_max_in_clutter; }},
+    {"delete_run_in_clutter", [](P& p) -> std::size_t& { return p.delete_run_in_clutter; }},
 };
 const Flag kFlags[] = {
     {"unresolved_pooling", [](P& p) -> bool& { return p.unresolved_pooling; }},

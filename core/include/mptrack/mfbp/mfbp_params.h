@@ -227,6 +227,12 @@ struct MfbpParams {
                                       ///< one missed detection already drops b_s below 0.5, and
                                       ///< three misses of S1's 10/3-SNR target (Pd 0.89) occur
                                       ///< in ~1/3 of runs
+  std::size_t delete_run_in_clutter = 12;  ///< Ours. delete_run of a confirmed track inside a
+                                           ///< Gaussian clutter component at least as strong as
+                                           ///< itself (track_management.h, deletion_run): the
+                                           ///< clutter explains its detections away, so a run of
+                                           ///< misses there says little. At or below delete_run:
+                                           ///< off
   std::size_t tentative_timeout_scans = 6;  ///< tentative tracks older than this are dropped
                                             ///< (two windows: docs/algorithms/mfbp.md
                                             ///< §Confirmation and reporting)

@@ -248,7 +248,7 @@ class MfbpTracker {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kOutput);
     mfbp::confirm_tracks(tracks_, n, params_, counters_);
     for (std::size_t k = 0; k < finalize_count; ++k) emit_estimate(k);
-    mfbp::manage_tracks(tracks_, n, finalize_count, params_, counters_);
+    mfbp::manage_tracks(tracks_, clutter_, n, finalize_count, params_, counters_);
     if (estimate_clutter()) mfbp::manage_components(clutter_, finalize_count, params_, counters_);
     shift_window(finalize_count);
   }
