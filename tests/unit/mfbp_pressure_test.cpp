@@ -19,7 +19,7 @@ struct PressureCaps {
   static constexpr std::size_t kMaxTargets = N;
   static constexpr std::size_t kMaxMeasurements = 16;
   static constexpr std::size_t kMaxClutterComponents = 2;
-  static constexpr std::size_t kMaxWindow = 1;
+  static constexpr std::size_t kMaxWindow = 4;  // the filter keeps 3 scans of history for births
 };
 
 MfbpParams<float> filter_params() {
