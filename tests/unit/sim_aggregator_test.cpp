@@ -70,7 +70,8 @@ constexpr std::uint64_t TrackerCounters::*kCounterFields[] = {
     &TrackerCounters::tracks_confirmed, &TrackerCounters::tracks_deleted,  &TrackerCounters::track_cap_hits,
     &TrackerCounters::clutter_born,    &TrackerCounters::clutter_deleted,  &TrackerCounters::clutter_cap_hits,
     &TrackerCounters::bp_not_converged, &TrackerCounters::numerical_repairs, &TrackerCounters::gap_resets,
-    &TrackerCounters::measurements_duplicate, &TrackerCounters::association_cap_hits};
+    &TrackerCounters::measurements_duplicate, &TrackerCounters::association_cap_hits,
+    &TrackerCounters::tentative_evicted};
 static_assert(sizeof(kCounterFields) / sizeof(kCounterFields[0]) * sizeof(std::uint64_t) == sizeof(TrackerCounters),
               "a TrackerCounters field is missing from kCounterFields");
 
@@ -123,7 +124,7 @@ TEST_CASE("sim run record: the estimate of tracker step i lands on the i-th deli
 }
 
 TEST_CASE("sim aggregator: every TrackerCounters field is summed and written, gap_resets and measurements_duplicate too") {
-  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 1, 3});
+  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 1, 3, TrackScoringParams{}});
   const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
   const std::vector<ScanMetrics> m(3);
   RunRecord a = record(0, {1, 2, 3}, {1, 1, 1});
@@ -141,12 +142,13 @@ TEST_CASE("sim aggregator: every TrackerCounters field is summed and written, ga
   CHECK(j["counters"]["gap_resets"] == 101 * 15);
   CHECK(j["counters"]["measurements_duplicate"] == 101 * 16);
   CHECK(j["counters"]["association_cap_hits"] == 101 * 17);
-  CHECK(j["counters"].size() == 17);
+  CHECK(j["counters"]["tentative_evicted"] == 101 * 18);
+  CHECK(j["counters"].size() == 18);
 }
 
 TEST_CASE("sim aggregator: hand-computed means over evaluation scans, statuses, latency and measurements") {
   // 2 runs x 3 scans, evaluation interval 2..3.
-  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 2, 3});
+  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 2, 3, TrackScoringParams{}});
   const std::vector<sc::SimScan> scans = {scan_with(1, 4), scan_with(2, 6), scan_with(3, 8)};
   RunRecord a = record(0, {1, 2, 3}, {10, 20, 30});
   a.statuses = {Status::kOk, Status::kPartial, Status::kCapacityExceeded, Status::kOk};
@@ -186,7 +188,7 @@ TEST_CASE("sim aggregator: hand-computed means over evaluation scans, statuses, 
 
 TEST_CASE("sim aggregator: the measurement checksum chains over delivered scans only, in order") {
   const std::vector<sc::SimScan> scans = {scan_with(1, 2), scan_with(2, 3), scan_with(3, 1)};
-  Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 1, 3});
+  Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 1, 3, TrackScoringParams{}});
   agg.add_run(scans, record(0, {1, 3}, {0, 0, 0}), std::vector<ScanMetrics>(3));
   const std::uint64_t expected = measurement_checksum(scans[2], measurement_checksum(scans[0], kChecksumSeed));
   CHECK(agg.summary().measurement_checksum == expected);
@@ -210,7 +212,7 @@ TEST_CASE("sim evaluator: matched lists each truth within c of its OSPA-assigned
 TEST_CASE("sim aggregator: confirmed-track count per scan, mean and standard deviation over runs") {
   // 3 runs x 2 scans; confirmed counts scan 1: 1, 2, 3 (mean 2, population std sqrt(2/3));
   // scan 2: 4, 4, 4 (std 0). Truths: 2, 2, 1 at scan 1.
-  Aggregator agg(SummaryHeader{"s", "t", 3, 2, 1, 1.0, 1, 2});
+  Aggregator agg(SummaryHeader{"s", "t", 3, 2, 1, 1.0, 1, 2, TrackScoringParams{}});
   const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0)};
   const std::uint32_t scan1[] = {1, 2, 3};
   const std::uint32_t truths1[] = {2, 2, 1};
@@ -232,7 +234,7 @@ TEST_CASE("sim aggregator: per-object RMSE over matched evaluation scans, sorted
   // 1 run x 3 scans, evaluation 2..3. Target 1 matched at 3 m (scan 2) and 4 m (scan 3):
   // RMSE sqrt((9 + 16) / 2). Target 2 alive at scans 2, 3, matched only at scan 1 (not
   // evaluated): never matched. Target 3 matched at 1 m on scan 3: RMSE 1.
-  Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 2, 3});
+  Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 2, 3, TrackScoringParams{}});
   std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
   for (auto& s : scans) s.truth = {truth_at(1, 0, 0, -1), truth_at(2, 50, 0, -1)};
   scans[2].truth.push_back(truth_at(3, 90, 0, -1));
