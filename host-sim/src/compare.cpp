@@ -111,6 +111,39 @@ void write_compare_outputs(const CompareResult& res, const CompareConfig& cfg) {
                             series, res.eval_first_scan, res.eval_last_scan, res.ospa_order, res.ospa_cutoff_m);
 }
 
+namespace {
+
+// Track scores of one row (eval/track_scoring.h; docs/algorithms/metrics.md
+// §Track scores): confirmation delay, breaks, switches, coverage, false tracks.
+nlohmann::ordered_json track_scores_json(const TrackScoreTotals& t) {
+  return {{"ttl_scans", t.ttl_scans()},
+          {"track_breaks_per_target", t.per_target(t.track_breaks)},
+          {"id_switches_per_target", t.per_target(t.id_switches)},
+          {"fragmentations_per_target", t.per_target(t.fragmentations)},
+          {"tpd", t.tpd()},
+          {"nvt", t.nvt()},
+          {"false_tracks_per_run", t.nft()},
+          {"targets_never_tracked", t.targets - t.targets_tracked}};
+}
+
+std::string track_scores_markdown(const CompareResult& r) {
+  std::string s = "\n| tracker | TTL [scans] | breaks / target | ID switches / target | TPD | NVT | false tracks / run "
+                  "| targets never tracked |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const CompareRow& x : r.rows) {
+    const TrackScoreTotals& t = x.track_scores;
+    s += "| " + x.tracker + " | " + fmt("%.2f", t.ttl_scans()) + " | " + fmt("%.3f", t.per_target(t.track_breaks)) +
+         " | " + fmt("%.3f", t.per_target(t.id_switches)) + " | " + fmt("%.3f", t.tpd()) + " | " +
+         fmt("%.2f", t.nvt()) + " | " + fmt("%.2f", t.nft()) + " | " + std::to_string(t.targets - t.targets_tracked) +
+         " |\n";
+  }
+  s += "\nTrack scores (host-sim/src/eval/track_scoring.h, docs/algorithms/metrics.md): TTL = scans from a "
+       "target's birth to its first confirmed track; a break = its track ended and a new ID took over; TPD = "
+       "fraction of its alive scans covered by a confirmed track.\n";
+  return s;
+}
+
+}  // namespace
+
 nlohmann::ordered_json compare_to_json(const CompareResult& r) {
   using json = nlohmann::ordered_json;
   json rows = json::array();
@@ -135,6 +168,7 @@ nlohmann::ordered_json compare_to_json(const CompareResult& r) {
                     {"step_errors", x.step_errors},
                     {"steps_not_ok", x.steps_not_ok()},
                     {"measurement_checksum", hex64(x.measurement_checksum)},
+                    {"track_scores", track_scores_json(x.track_scores)},
                     {"ospa_per_scan", x.ospa_per_scan}});
   }
   return json{{"scenario", r.scenario},
@@ -172,6 +206,7 @@ std::string compare_to_markdown(const CompareResult& r) {
        "(missed/false = c^p/2 per unassigned truth/track). card. error = |#confirmed - #targets|; NFT = confirmed "
        "tracks with no target within c. Latency: wall time of one step() on this host (a smoother's p50 is a "
        "buffering step). errors: steps returning an error status.\n";
+  s += track_scores_markdown(r);
   return s;
 }
 

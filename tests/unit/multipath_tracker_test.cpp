@@ -169,8 +169,8 @@ TEST_CASE("multipath: validate() names num_paths above Caps::kMaxPaths and a pd 
 }
 
 TEST_CASE("multipath: the gate-pair cap drops the farthest pairs, counts them and returns kCapacityExceeded") {
-  // A confirmed track, then a scan with 12 detections on its EE path
-  // prediction (kMaxGatePairs = 8 per pseudo-target).
+  // A confirmed track, then a scan with 40 detections on its EE path
+  // prediction (DefaultCaps::kMaxGatePairs = 32 per pseudo-target).
   const auto scene = one_target_scene(0.999, 0.0);
   auto scans = othr_scene::make_scans<Tracker::kMaxMeasurements>(scene, 9);
   auto trk = std::make_unique<Tracker>();
@@ -183,9 +183,9 @@ TEST_CASE("multipath: the gate-pair cap drops the farthest pairs, counts them an
   last.measurements.clear();
   const auto y = mptrack::model::othr_measure(scene.targets[0].at(8, scene.dt_s), scene.geometry.paths[0],
                                               scene.geometry.baseline_km);
-  for (int n = 0; n < 12; ++n) {
+  for (int n = 0; n < 40; ++n) {
     mptrack::Measurement<float> m;
-    m.range_m = static_cast<float>(y(0) * 1e3 + 200.0 * n);
+    m.range_m = static_cast<float>(y(0) * 1e3 + 50.0 * n);
     m.doppler_mps = static_cast<float>(y(1) * 1e3);
     m.azimuth_rad = static_cast<float>(y(2));
     REQUIRE(last.measurements.push_back(m) == Status::kOk);

@@ -188,8 +188,14 @@ TEST_CASE("F5/F9: MF-BP init rejects params whose clutter seed grid or threshold
   p = mptrack::MfbpParams<float>{};
   p.dirichlet_kappa = 3.4e38f;
   CHECK(p.validate() == Status::kInvalidArgument);
+  // A rate that small (or 0: a scene without uniform clutter) is now valid: every use goes
+  // through the uniform_rate_floor_per_scan floor (effective_uniform_rate), which itself
+  // must stay >= 1e-6.
   p = mptrack::MfbpParams<float>{};
   p.uniform_rate_per_scan = 2.4e-41f;
+  CHECK(p.validate() == Status::kOk);
+  CHECK(mptrack::effective_uniform_rate(p.uniform_rate_per_scan, p) == p.uniform_rate_floor_per_scan);
+  p.uniform_rate_floor_per_scan = 2.4e-41f;
   CHECK(p.validate() == Status::kInvalidArgument);
   CHECK(mptrack::MfbpParams<float>{}.validate() == Status::kOk);  // defaults pass
 }

@@ -69,7 +69,7 @@ TEST_CASE("compare: a tiny seed001 run gives one row per tracker, in order, with
   for (const auto& row : doc["rows"]) {
     for (const char* key : {"tracker", "mean_ospa", "mean_gospa", "gospa_localisation", "gospa_missed",
                             "gospa_false", "cardinality_error", "nft", "latency_us", "measurement_checksum",
-                            "ospa_per_scan"}) {
+                            "track_scores", "ospa_per_scan"}) {
       CAPTURE(key);
       CHECK(row.contains(key));
     }
@@ -79,14 +79,14 @@ TEST_CASE("compare: a tiny seed001 run gives one row per tracker, in order, with
     CHECK(row["latency_us"]["samples"] == 12);  // 2 runs x 6 scans
     CHECK(row["ospa_per_scan"].size() == 6);
   }
-  // The markdown table has exactly one line per tracker.
+  // Each of the two markdown tables (metrics, track scores) has exactly one line per tracker.
   std::ifstream md(cfg.out_dir + "/compare.md");
   std::string line;
   int rows = 0;
   while (std::getline(md, line)) {
     for (const auto& t : cfg.trackers) rows += line.rfind("| " + t + " |", 0) == 0 ? 1 : 0;
   }
-  CHECK(rows == 4);
+  CHECK(rows == 2 * 4);
   CHECK(std::filesystem::exists(cfg.out_dir + "/ospa.svg"));
 }
 

@@ -71,6 +71,8 @@ struct TrackerCounters {
   std::uint64_t gap_resets = 0;               ///< scans after a gap > Params::max_gap_s: all tracks dropped (scan_clock.h)
   std::uint64_t measurements_duplicate = 0;   ///< exact duplicates of an earlier measurement of the scan, dropped (measurement.h)
   std::uint64_t association_cap_hits = 0;     ///< gated (track, measurement) pairs dropped by an association cap
+  std::uint64_t tentative_evicted = 0;        ///< tentative tracks deleted to make room for a more likely
+                                              ///< birth when the track table was full (never a confirmed one)
 };
 
 /// Calls f(name, member pointer) for every TrackerCounters field, in
@@ -95,9 +97,10 @@ void for_each_counter(F&& f) {
   f("gap_resets", &TrackerCounters::gap_resets);
   f("measurements_duplicate", &TrackerCounters::measurements_duplicate);
   f("association_cap_hits", &TrackerCounters::association_cap_hits);
+  f("tentative_evicted", &TrackerCounters::tentative_evicted);
 }
 /// Number of fields for_each_counter() visits.
-inline constexpr std::size_t kTrackerCounterFields = 17;
+inline constexpr std::size_t kTrackerCounterFields = 18;
 static_assert(sizeof(TrackerCounters) == kTrackerCounterFields * sizeof(std::uint64_t),
               "every TrackerCounters field must be listed in for_each_counter()");
 

@@ -39,6 +39,8 @@ const Real kReals[] = {
     {"pd_no_amplitude", [](P& p) -> double& { return p.pd_no_amplitude; }},
     {"bp_damping", [](P& p) -> double& { return p.bp_damping; }},
     {"birth_max_component_share", [](P& p) -> double& { return p.birth_max_component_share; }},
+    {"birth_amplitude_tail", [](P& p) -> double& { return p.birth_amplitude_tail; }},
+    {"uniform_rate_floor_per_scan", [](P& p) -> double& { return p.uniform_rate_floor_per_scan; }},
     {"unexplained_threshold", [](P& p) -> double& { return p.unexplained_threshold; }},
     {"noise.range_std_m", [](P& p) -> double& { return p.noise.range_std_m; }},
     {"noise.azimuth_std_rad", [](P& p) -> double& { return p.noise.azimuth_std_rad; }},
@@ -53,6 +55,8 @@ const Count kCounts[] = {
     {"bp_max_iterations", [](P& p) -> std::size_t& { return p.bp_max_iterations; }},
     {"birth_max_per_window", [](P& p) -> std::size_t& { return p.birth_max_per_window; }},
     {"tentative_timeout_scans", [](P& p) -> std::size_t& { return p.tentative_timeout_scans; }},
+    {"birth_max_in_clutter", [](P& p) -> std::size_t& { return p.birth_max_in_clutter; }},
+    {"delete_run_in_clutter", [](P& p) -> std::size_t& { return p.delete_run_in_clutter; }},
 };
 const Flag kFlags[] = {
     {"unresolved_pooling", [](P& p) -> bool& { return p.unresolved_pooling; }},

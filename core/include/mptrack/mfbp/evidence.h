@@ -79,7 +79,8 @@ void known_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, const ClutterSou
                             const MfbpParams<T>& p, const ModelConstants<T>& mc, T log_dop_clutter) {
   const auto& kc = p.known_clutter;
   const T d = p.amplitude.threshold;
-  const T lu = dmath::dlog(kc.uniform_rate_per_scan) - mc.log_volume + log_dop_clutter;
+  const T rate_u = effective_uniform_rate(kc.uniform_rate_per_scan, p);
+  const T lu = dmath::dlog(rate_u) - mc.log_volume + log_dop_clutter;
   for (std::size_t j = 0; j < s.count; ++j) {
     T v = lu;
     if (p.amplitude.use_amplitude) v += amplitude_loglik(s.amp[j], d, T(1) + kc.uniform_cnr, mc.n_order);
@@ -120,7 +121,7 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
     log_rate = p.clutter_rate_in_da ? dmath::dlog(lambda) : T(0);
   } else {
     e_log_pi[0] = T(0);
-    log_rate = dmath::dlog(p.uniform_rate_per_scan);
+    log_rate = dmath::dlog(effective_uniform_rate(p.uniform_rate_per_scan, p));
   }
   const model::InverseGamma<T>& ig0 = cl.uniform.igs[k];
   const T lu = log_rate + e_log_pi[0] - mc.log_volume + log_dop_clutter;

@@ -176,7 +176,16 @@ struct MfbpParams {
                                       ///< map in known_clutter); validate() rejects the others
   bool clutter_rate_in_da = true;     ///< multiply clutter evidence by lambda_hat
                                       ///< (docs/algorithms/mfbp.md §Departures from the paper)
-  T uniform_rate_per_scan = T(30);    ///< known uniform clutter rate for kKnownRateUniform [-]
+  T uniform_rate_per_scan = T(30);    ///< known uniform clutter rate for kKnownRateUniform;
+                                      ///< also the Dirichlet prior of the estimated uniform
+                                      ///< share. 0 is valid (a scene of Gaussian clutter
+                                      ///< only): the floor below applies [-]
+  T uniform_rate_floor_per_scan = T(1);  ///< Ours. The uniform clutter rate (known or prior,
+                                         ///< here and in known_clutter) is used as at least
+                                         ///< this, so that the uniform component stays the
+                                         ///< catch-all of a measurement nothing else explains
+                                         ///< and its log-rate is finite (effective_uniform_rate).
+                                         ///< Rates at or above it are used unchanged [-]
   T nw_forgetting_factor = T(0.99);   ///< xi_W [-]
   NwForgetting nw_forgetting = NwForgetting::kMeanPreserving;
   T dirichlet_kappa = T(5);           ///< kappa [-]
@@ -203,6 +212,14 @@ struct MfbpParams {
                                          ///< real targets cannot be born: S2 OSPA 122.7 m vs 89.9
                                          ///< m at 0.9 (docs/results/seed000-s1.md). Lower values
                                          ///< also block targets inside chaff.
+  T birth_amplitude_tail = T(0.2);    ///< Ours. A measurement that fails the component-share
+                                      ///< test above may still seed a track if its amplitude is
+                                      ///< this unlikely under every Gaussian component whose gate
+                                      ///< holds it: P(u > m^2 | u > d^2) at the component's mean
+                                      ///< CNR (track_birth.h, amplitude_tail; docs/algorithms/
+                                      ///< mfbp.md §Birth). 0 = off (the birth path of before) [-]
+  std::size_t birth_max_in_clutter = 3;  ///< Ours. Births per window whose points passed only
+                                         ///< by that amplitude test (inside Gaussian clutter)
   T confirm_threshold = T(0.75);      ///< confirm when b_s(1) >= this at any window scan [-]
   T delete_threshold = T(0.5);        ///< delete after delete_run scans with b_s(1) below [-]
   std::size_t delete_run = 5;         ///< consecutive low-visibility scans before deletion. Ours:
@@ -210,6 +227,12 @@ struct MfbpParams {
                                       ///< one missed detection already drops b_s below 0.5, and
                                       ///< three misses of S1's 10/3-SNR target (Pd 0.89) occur
                                       ///< in ~1/3 of runs
+  std::size_t delete_run_in_clutter = 12;  ///< Ours. delete_run of a confirmed track inside a
+                                           ///< Gaussian clutter component at least as strong as
+                                           ///< itself (track_management.h, deletion_run): the
+                                           ///< clutter explains its detections away, so a run of
+                                           ///< misses there says little. At or below delete_run:
+                                           ///< off
   std::size_t tentative_timeout_scans = 6;  ///< tentative tracks older than this are dropped
                                             ///< (two windows: docs/algorithms/mfbp.md
                                             ///< §Confirmation and reporting)
@@ -236,8 +259,17 @@ struct MfbpParams {
   Status validate_clutter_grid(T span_r, T span_a, T max_cells_per_axis, T max_seed_cells,
                                T max_cell_volume_ratio, T max_seed_factor, T max_count,
                                ParamError* w) const;
-  Status validate_known_clutter(T min_count, T max_count, T max_power, ParamError* w) const;
+  Status validate_known_clutter(T max_count, T max_power, ParamError* w) const;
 };
+
+/// A uniform clutter rate as the tracker uses it: at least
+/// uniform_rate_floor_per_scan (a scene without uniform clutter, rate 0,
+/// keeps a weak catch-all uniform component; docs/algorithms/mfbp.md
+/// §Clutter chain). Rates at or above the floor are returned unchanged.
+template <class T>
+T effective_uniform_rate(T rate_per_scan, const MfbpParams<T>& p) {
+  return rate_per_scan < p.uniform_rate_floor_per_scan ? p.uniform_rate_floor_per_scan : rate_per_scan;
+}
 
 /// The paper's Sec. IV-A configuration with the corrections of
 /// docs/algorithms/mfbp.md §Departures from the paper: the "mfbp" tracker
@@ -317,7 +349,9 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "bp_damping",
                       check_range_below(bp_damping, T(0), T(1)));
   MPTRACK_CHECK_PARAM(w, "w_min", check_positive(w_min));
-  MPTRACK_CHECK_PARAM(w, "uniform_rate_per_scan", check_range(uniform_rate_per_scan, kMinCount, kMaxCount));
+  MPTRACK_CHECK_PARAM(w, "uniform_rate_per_scan", check_range(uniform_rate_per_scan, T(0), kMaxCount));
+  MPTRACK_CHECK_PARAM(w, "uniform_rate_floor_per_scan",
+                      check_range(uniform_rate_floor_per_scan, kMinCount, kMaxCount));
   MPTRACK_CHECK_PARAM(w, "nw_forgetting_factor",
                       check(is_finite(nw_forgetting_factor) && nw_forgetting_factor > T(0) &&
                             !(nw_forgetting_factor > T(1))));
@@ -332,6 +366,8 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "birth_max_per_window", check_at_least(birth_max_per_window, 1));
   MPTRACK_CHECK_PARAM(w, "unexplained_threshold", check_open_probability(unexplained_threshold));
   MPTRACK_CHECK_PARAM(w, "birth_max_component_share", check_range(birth_max_component_share, T(0), T(1)));
+  MPTRACK_CHECK_PARAM(w, "birth_amplitude_tail",
+                      check(birth_amplitude_tail >= T(0) && birth_amplitude_tail < T(1)));
   MPTRACK_CHECK_PARAM(w, "confirm_threshold", check_open_probability(confirm_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_threshold", check_open_probability(delete_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_run", check_at_least(delete_run, 1));
@@ -343,7 +379,7 @@ Status MfbpParams<T>::validate(ParamError* where) const {
                       check(clutter_mode == ClutterMode::kEstimatedMap ||
                             clutter_mode == ClutterMode::kKnownRateUniform ||
                             clutter_mode == ClutterMode::kKnownMap));
-  return validate_known_clutter(kMinCount, kMaxCount, kMaxPower, w);
+  return validate_known_clutter(kMaxCount, kMaxPower, w);
 }
 
 /// The clutter-birth grid fields (see validate()).
@@ -371,13 +407,13 @@ Status MfbpParams<T>::validate_clutter_grid(T span_r, T span_a, T max_cells_per_
 
 /// known_clutter (used by ClutterMode::kKnownMap only; see validate()).
 template <class T>
-Status MfbpParams<T>::validate_known_clutter(T min_count, T max_count, T max_power, ParamError* w) const {
+Status MfbpParams<T>::validate_known_clutter(T max_count, T max_power, ParamError* w) const {
   const auto& kc = known_clutter;
   MPTRACK_CHECK_PARAM(w, "known_clutter.num_components",
                       check_at_most(kc.num_components, kMaxKnownClutterComponents, "kMaxKnownClutterComponents"));
   if (clutter_mode != ClutterMode::kKnownMap) return Status::kOk;
   MPTRACK_CHECK_PARAM(w, "known_clutter.uniform_rate_per_scan",
-                      check_range(kc.uniform_rate_per_scan, min_count, max_count));
+                      check_range(kc.uniform_rate_per_scan, T(0), max_count));
   MPTRACK_CHECK_PARAM(w, "known_clutter.uniform_cnr", check_range(kc.uniform_cnr, T(0), max_power));
   for (std::size_t c = 0; c < kc.num_components; ++c) {
     const auto& comp = kc.components[c];

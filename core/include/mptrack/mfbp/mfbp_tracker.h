@@ -50,9 +50,12 @@
 //     measurements per scan (association_cap_hits counts the dropped
 //     pairs once per window that associates the scan; step returns
 //     kCapacityExceeded);
-//   * tracks: births beyond kMaxTargets live tracks are refused
-//     (track_cap_hits); components beyond kMaxClutterComponents likewise
-//     (clutter_cap_hits); both make step return kCapacityExceeded;
+//   * tracks: a birth that finds every slot taken evicts the least likely
+//     tentative track if that one is less likely than a newborn
+//     (tentative_evicted; not a cap hit); otherwise it is refused
+//     (track_cap_hits). A confirmed track is never evicted. Components
+//     beyond kMaxClutterComponents are refused (clutter_cap_hits); both
+//     refusals make step return kCapacityExceeded;
 //   * birth candidates: init() refuses birth_max_per_window above
 //     Caps::kMaxBirthCandidates (kInvalidArgument).
 #pragma once
@@ -143,8 +146,8 @@ class MfbpTracker {
     // Clutter priors at "scan -1".
     clutter_.uniform.ig0.a = params.uniform_cnr_prior_shape;
     clutter_.uniform.ig0.b = (T(1) + params.uniform_cnr_prior) * (params.uniform_cnr_prior_shape - T(1));
-    clutter_.uniform.alpha0 = params.uniform_rate_per_scan;
-    clutter_.m_prev = params.uniform_rate_per_scan;
+    clutter_.uniform.alpha0 = effective_uniform_rate(params.uniform_rate_per_scan, params);
+    clutter_.m_prev = effective_uniform_rate(params.uniform_rate_per_scan, params);
     initialized_ = true;
     return Status::kOk;
   }
@@ -268,7 +271,7 @@ class MfbpTracker {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kOutput);
     mfbp::confirm_tracks(tracks_, n, params_, counters_);
     for (std::size_t k = 0; k < finalize_count; ++k) emit_estimate(k);
-    mfbp::manage_tracks(tracks_, n, finalize_count, params_, counters_);
+    mfbp::manage_tracks(tracks_, clutter_, n, finalize_count, params_, counters_);
     if (estimate_clutter()) mfbp::manage_components(clutter_, finalize_count, params_, counters_);
     shift_window(finalize_count);
   }
@@ -291,7 +294,7 @@ class MfbpTracker {
   }
 
   void spawn_tracks(std::size_t n) {
-    track_spawner_.spawn(n, store_, tracks_, params_, model_, next_track_id_, counters_);
+    track_spawner_.spawn(n, store_, tracks_, clutter_, params_, model_, next_track_id_, counters_);
   }
 
   // Second birth pass (our choice, docs/algorithms/mfbp.md §Departures):

@@ -1,6 +1,7 @@
 // Two-point track initiation (seed 000 Sec. III-G; docs/algorithms/mfbp.md §Birth).
 #pragma once
 
+#include "mptrack/math/detmath.h"
 #include "mptrack/mfbp/cubature.h"
 #include "mptrack/model/inverse_gamma.h"
 
@@ -98,6 +99,22 @@ model::InverseGamma<T> birth_snr_belief(T m1, T m2, T d, T shape, T factor) {
   if (!(mean_excess > T(1e-3))) mean_excess = T(1e-3);
   ig.b = factor * mean_excess;
   return ig;
+}
+
+/// How unlikely amplitude m is for a source of mean total power varsigma
+/// (docs/algorithms/mfbp.md §Birth, birth inside clutter): P(u > m^2 | u > d^2)
+/// for the power u ~ Gamma(n, varsigma / n) above the threshold d, i.e.
+/// e^-(x_m - x_d) sum_{l<n} x_m^l/l! / sum_{l<n} x_d^l/l!, x = n (.)^2 / varsigma
+/// (the detection law of docs/algorithms/models.md §Detection probability,
+/// n = 1 or 2). Swerling I: e^-((m^2 - d^2) / varsigma).
+template <class T>
+T amplitude_tail(T m, T d, T varsigma, int n) {
+  const T tn = T(n);
+  const T xm = tn * m * m / varsigma;
+  const T xd = tn * d * d / varsigma;
+  T tail = dmath::dexp(-(xm - xd));
+  if (n == 2) tail *= (T(1) + xm) / (T(1) + xd);
+  return tail;
 }
 
 }  // namespace mptrack::mfbp

@@ -5,7 +5,9 @@
 //     reaches confirm_threshold on a window scan;
 //   * a track is deleted when b_s < delete_threshold on delete_run
 //     consecutive scans (finalised history + the window tail), or when it
-//     stays tentative for tentative_timeout_scans finalised scans;
+//     stays tentative for tentative_timeout_scans finalised scans; a
+//     confirmed track inside a Gaussian clutter component at least as strong
+//     as itself gets delete_run_in_clutter scans instead (deletion_run);
 //   * a Gaussian clutter component dies when its expected count
 //     M_tau,k = M_k E[pi_tau] stays below clutter_death_count on every
 //     finalised scan of clutter_death_windows consecutive windows.
@@ -16,7 +18,10 @@
 
 #include "mptrack/mfbp/clutter_slot.h"
 #include "mptrack/mfbp/mfbp_params.h"
+#include "mptrack/mfbp/model_constants.h"
 #include "mptrack/mfbp/track_slot.h"
+#include "mptrack/model/mahalanobis.h"
+#include "mptrack/model/polar_measurement.h"
 #include "mptrack/track_report.h"
 
 namespace mptrack::mfbp {
@@ -36,21 +41,55 @@ void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams
   }
 }
 
+/// Low-visibility scans before track t is deleted (docs/algorithms/mfbp.md
+/// §Confirmation and reporting, track continuity in clutter): delete_run, or
+/// delete_run_in_clutter for a confirmed track whose smoothed position on
+/// window scan k lies in the gate (clutter_gate_chi2) of a Gaussian clutter
+/// component whose mean CNR is at least the track's mean SNR. There the
+/// component explains the target's detections as well as the track does, so
+/// a run of missed associations is weak evidence that the target is gone.
+template <class T, class Caps>
+std::size_t deletion_run(const TrackSlot<T, Caps>& t, std::size_t k, const ClutterTable<T, Caps>& cl,
+                         const MfbpParams<T>& p) {
+  if (!t.confirmed || !(p.delete_run_in_clutter > p.delete_run)) return p.delete_run;
+  const Vec2<T> z = model::polar_of_state(t.xs[k]);
+  const T snr = p.amplitude.use_amplitude ? t.igs[k].mean() - T(1) : T(0);
+  bool inside = false;
+  const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T cnr) {
+    const model::Mahalanobis2<T> gate(cov);
+    if (inside || !gate.valid() || cnr < snr) return;
+    inside = gate.distance2(z(0) - mu(0), model::wrap_angle(z(1) - mu(1))) <= p.clutter_gate_chi2;
+  };
+  if (p.clutter_mode == ClutterMode::kKnownMap) {
+    const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
+    for (std::size_t c = 0; c < nk; ++c) {
+      const auto& kc = p.known_clutter.components[c];
+      if (kc.rate_per_scan > T(0)) consider(kc.mean, kc.covariance, kc.cnr);
+    }
+  } else if (estimate_clutter(p)) {
+    for (const auto& cs : cl.comps) {
+      if (cs.alive) consider(cs.nws[k].mu, cs.nws[k].expected_covariance(), cs.igs[k].mean() - T(1));
+    }
+  }
+  return inside ? p.delete_run_in_clutter : p.delete_run;
+}
+
 /// Deletion after a window of n scans whose first fc are finalised.
 template <class T, class Caps>
-void manage_tracks(TrackTable<T, Caps>& tracks, std::size_t n, std::size_t fc, const MfbpParams<T>& p,
-                   TrackerCounters& counters) {
+void manage_tracks(TrackTable<T, Caps>& tracks, const ClutterTable<T, Caps>& cl, std::size_t n, std::size_t fc,
+                   const MfbpParams<T>& p, TrackerCounters& counters) {
   for (auto& t : tracks) {
     if (!t.alive) continue;
+    const std::size_t run_needed = n > 0 ? deletion_run(t, n - 1, cl, p) : p.delete_run;
     for (std::size_t k = t.first; k < fc; ++k) {
       t.low_run = t.vis[k] < p.delete_threshold ? t.low_run + 1u : 0u;
       ++t.age;
     }
-    bool remove = t.low_run >= p.delete_run;
+    bool remove = t.low_run >= run_needed;
     std::uint32_t run = t.low_run;
     for (std::size_t k = (fc > t.first ? fc : t.first); k < n && !remove; ++k) {
       run = t.vis[k] < p.delete_threshold ? run + 1u : 0u;
-      remove = run >= p.delete_run;
+      remove = run >= run_needed;
     }
     if (!t.confirmed && t.age >= p.tentative_timeout_scans) remove = true;
     if (remove) {

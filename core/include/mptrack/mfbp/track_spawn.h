@@ -7,15 +7,25 @@
 //
 // "Unexplained" on a scan with association beliefs: sum_i a_ij below
 // unexplained_threshold and Gaussian-clutter share below
-// birth_max_component_share; on a new scan (no beliefs yet): outside the
-// chi^2 gate of every track. The TrackSpawner owns that per-measurement
-// mark; clutter seeding (clutter_spawn.h) reads it on new scans.
+// birth_max_component_share, or (birth inside clutter) an amplitude that
+// every Gaussian component gating it makes unlikely (birth_amplitude_tail;
+// at most birth_max_in_clutter such births per window); on a new scan (no
+// beliefs yet): outside the chi^2 gate of every track. The TrackSpawner owns
+// that per-measurement mark; clutter seeding (clutter_spawn.h) reads it on
+// new scans.
+//
+// Full track table: a birth evicts the live tentative track least likely
+// to be confirmed (smallest max_k b_s(1) over the window) if that is below
+// the newborn's visibility_at_birth (tentative_evicted); a confirmed track
+// or a track born in the same pass is never evicted. Otherwise the birth is
+// refused (track_cap_hits).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 
+#include "mptrack/mfbp/clutter_slot.h"
 #include "mptrack/mfbp/cubature.h"
 #include "mptrack/mfbp/mfbp_caps.h"
 #include "mptrack/mfbp/mfbp_params.h"
@@ -40,10 +50,11 @@ class TrackSpawner {
 
   /// Marks the unexplained measurements of every stored scan and starts
   /// tracks from the best pairs among the n window scans (second points).
-  void spawn(std::size_t n, Store& store, Tracks& tracks, const MfbpParams<T>& p,
-             const ModelConstants<T>& mc, std::uint32_t& next_id, TrackerCounters& counters) {
+  void spawn(std::size_t n, Store& store, Tracks& tracks, const ClutterTable<T, Caps>& cl,
+             const MfbpParams<T>& p, const ModelConstants<T>& mc, std::uint32_t& next_id,
+             TrackerCounters& counters) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
-    mark_unexplained(store, tracks, p, mc);
+    mark_unexplained(store, tracks, cl, p, mc);
     Candidates cand{};
     std::size_t nc = 0;
     const std::size_t max_births = p.birth_max_per_window < kMaxCandidates ? p.birth_max_per_window : kMaxCandidates;
@@ -53,7 +64,15 @@ class TrackSpawner {
         if (unexplained(store, s2, j2)) pair_second_point(store, s2, j2, p, cand, nc, max_births);
       }
     }
-    for (std::size_t b = 0; b < nc; ++b) start_track(cand[b], store, tracks, p, next_id, counters);
+    const std::uint32_t first_new = next_id;
+    std::size_t in_clutter = 0;
+    for (std::size_t b = 0; b < nc; ++b) {
+      if (cand[b].in_clutter && in_clutter++ >= p.birth_max_in_clutter) {
+        set_consumed(store, cand[b], 0);  // bounded births inside clutter (not a cap)
+        continue;
+      }
+      start_track(cand[b], store, tracks, p, first_new, next_id, counters);
+    }
   }
 
   /// Unexplained by the tracks at the last spawn() and not used by a birth.
@@ -65,24 +84,67 @@ class TrackSpawner {
   struct Candidate {
     T score = T(0);
     std::uint16_t s1 = 0, j1 = 0, s2 = 0, j2 = 0;
+    bool in_clutter = false;  ///< a point passed only by the amplitude test (kInClutter)
   };
+  /// Marks of unexplained_: not a candidate, a candidate, a candidate
+  /// inside Gaussian clutter by its amplitude alone.
+  static constexpr std::uint8_t kExplained = 0, kFree = 1, kInClutter = 2;
   using Candidates = std::array<Candidate, kMaxCandidates>;
 
-  void mark_unexplained(const Store& store, const Tracks& tracks, const MfbpParams<T>& p,
-                        const ModelConstants<T>& mc) {
+  void mark_unexplained(const Store& store, const Tracks& tracks, const ClutterTable<T, Caps>& cl,
+                        const MfbpParams<T>& p, const ModelConstants<T>& mc) {
+    const std::size_t k_ref = store.n_win() > 0 ? store.n_win() - 1 : 0;
     for (std::size_t si = 0; si < store.size(); ++si) {
       const ScanSlot<T, Caps>& s = store.at(si);
       for (std::size_t j = 0; j < s.count; ++j) {
         bool u = s.consumed[j] == 0;
+        bool in_clutter = false;
         if (u && s.has_beliefs) {
           const T comp_share = T(1) - s.target_share[j] - s.uniform_share[j];
-          u = s.target_share[j] < p.unexplained_threshold &&
+          const bool free_of_tracks = s.target_share[j] < p.unexplained_threshold;
+          u = free_of_tracks &&
               (p.birth_max_component_share >= T(1) || comp_share < p.birth_max_component_share);
+          if (free_of_tracks && !u) {
+            in_clutter = amplitude_stands_out(s.r[j], s.az[j], s.amp[j], k_ref, cl, p, mc.n_order);
+          }
         }
-        unexplained_[si][j] = u ? 1u : 0u;
+        unexplained_[si][j] = in_clutter ? kInClutter : (u ? kFree : kExplained);
       }
       if (!s.has_beliefs && si >= store.n_hist()) mark_gated(s, si, si - store.n_hist(), tracks, p, mc);
     }
+  }
+
+  /// Birth inside clutter (docs/algorithms/mfbp.md §Birth): true if the
+  /// amplitude m is less likely than birth_amplitude_tail under every
+  /// Gaussian clutter component whose gate (clutter_gate_chi2) holds (r, az),
+  /// at its mean CNR on window scan k_ref (estimated map) or its known CNR
+  /// (known map); false if no component gates it or the test is off.
+  static bool amplitude_stands_out(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
+                                   const MfbpParams<T>& p, int n_order) {
+    if (!(p.birth_amplitude_tail > T(0)) || !p.amplitude.use_amplitude) return false;
+    const T d = p.amplitude.threshold;
+    bool gated = false;
+    T tail_max = T(0);
+    const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T varsigma) {
+      const model::Mahalanobis2<T> gate(cov);
+      if (!gate.valid() || !(varsigma > T(0))) return;
+      if (gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > p.clutter_gate_chi2) return;
+      gated = true;
+      const T tail = amplitude_tail(m, d, varsigma, n_order);
+      tail_max = tail > tail_max ? tail : tail_max;
+    };
+    if (p.clutter_mode == ClutterMode::kKnownMap) {
+      const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
+      for (std::size_t c = 0; c < nk; ++c) {
+        const auto& kc = p.known_clutter.components[c];
+        if (kc.rate_per_scan > T(0)) consider(kc.mean, kc.covariance, T(1) + kc.cnr);
+      }
+    } else if (estimate_clutter(p)) {
+      for (const auto& cs : cl.comps) {
+        if (cs.alive) consider(cs.nws[k_ref].mu, cs.nws[k_ref].expected_covariance(), cs.igs[k_ref].mean());
+      }
+    }
+    return gated && tail_max < p.birth_amplitude_tail;
   }
 
   /// New scan: a measurement inside the chi^2 gate of a track present on
@@ -162,6 +224,7 @@ class TrackSpawner {
       c.j1 = static_cast<std::uint16_t>(j1);
       c.s2 = static_cast<std::uint16_t>(s2);
       c.j2 = static_cast<std::uint16_t>(j2);
+      c.in_clutter = unexplained_[s1][j1] == kInClutter || unexplained_[s2][j2] == kInClutter;
       offer(c, store, cand, nc, max_births);
       return;
     }
@@ -190,9 +253,35 @@ class TrackSpawner {
     store.at(c.s2).consumed[c.j2] = v;
   }
 
+  /// The live tentative track least likely to be confirmed (smallest
+  /// max_k b_s(1) over its window scans), if below visibility_at_birth and
+  /// born before this pass (id < first_new): deleted, its slot returned
+  /// (tentative_evicted). Tracks::kSize if none qualifies.
+  static std::size_t evict_tentative(Tracks& tracks, std::size_t n, const MfbpParams<T>& p,
+                                     std::uint32_t first_new, TrackerCounters& counters) {
+    std::size_t worst = Tracks::kSize;
+    T worst_vis = p.visibility_at_birth;
+    for (std::size_t i = 0; i < Tracks::kSize; ++i) {
+      const TrackSlot<T, Caps>& t = tracks[i];
+      if (!t.alive || t.confirmed || t.id >= first_new) continue;
+      T best = T(0);
+      for (std::size_t k = t.first; k < n; ++k) best = t.vis[k] > best ? t.vis[k] : best;
+      if (best < worst_vis) {
+        worst_vis = best;
+        worst = i;
+      }
+    }
+    if (worst == Tracks::kSize) return worst;
+    tracks[worst].alive = false;
+    ++counters.tracks_deleted;
+    ++counters.tentative_evicted;
+    return worst;
+  }
+
   static void start_track(const Candidate& c, Store& store, Tracks& tracks, const MfbpParams<T>& p,
-                          std::uint32_t& next_id, TrackerCounters& counters) {
-    const std::size_t slot = tracks.free_slot();
+                          std::uint32_t first_new, std::uint32_t& next_id, TrackerCounters& counters) {
+    std::size_t slot = tracks.free_slot();
+    if (slot == Tracks::kSize) slot = evict_tentative(tracks, store.n_win(), p, first_new, counters);
     if (slot == Tracks::kSize) {
       ++counters.track_cap_hits;
       set_consumed(store, c, 0);
