@@ -18,8 +18,11 @@ namespace {
 
 const std::string kDir = MPTRACK_SCENARIO_DIR;
 
+/// Trackers for other kinds of scene: raw frames (vmp, sbl-gnn), OTHR
+/// (mfbp-multipath, mptf), seed 003 sea scenes with patches (mfbp-nn, nemp).
 bool raw_frame_or_special(const std::string& name) {
-  return name == "vmp" || name == "sbl-gnn" || name == "mfbp-multipath";
+  return name == "vmp" || name == "sbl-gnn" || name == "mfbp-multipath" || name == "mptf" || name == "mfbp-nn" ||
+         name == "nemp";
 }
 
 }  // namespace

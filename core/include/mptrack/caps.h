@@ -28,10 +28,13 @@ struct DefaultCaps {
   static constexpr std::size_t kMaxWindow = 7;              ///< smoothing window length K (scans)
   /// MF-BP: gated measurements kept per track and scan (the most likely
   /// ones; the rest are dropped and counted in TrackerCounters::association_cap_hits).
-  /// 32: tentative tracks in seed000-s2/-s3's chaff (20-30 per scan) hold
+  /// 16: tentative tracks in seed000-s2/-s3's chaff (20-30 per scan) hold
   /// many gated measurements; one run dropped 1 803 / 5 962 pairs at 8 (38 /
-  /// 46 of 341 steps) and 222 / 1 838 at 16 (19 / 39 steps).
-  static constexpr std::size_t kMaxGatePairs = 32;
+  /// 46 of 341 steps), 222 / 1 838 at 16 (19 / 39 steps) and 4 / 165 at 32
+  /// (1 / 9 steps), with the same OSPA at 16 and 32. 32 would cost MF-BP
+  /// another ~76 KB here and push the Cortex-M7 image past its 512 KiB
+  /// (bench/README.md); LargeCaps has 32.
+  static constexpr std::size_t kMaxGatePairs = 16;
   /// MF-BP: cells of the clutter-seeding grid (the grid is coarsened until
   /// the region fits).
   static constexpr std::size_t kMaxClutterGridCells = 512;

@@ -84,6 +84,7 @@ mptrack_status mptrack_get_counters(const mptrack_tracker* tracker, mptrack_coun
   counters->gap_resets = c.gap_resets;
   counters->measurements_duplicate = c.measurements_duplicate;
   counters->association_cap_hits = c.association_cap_hits;
+  counters->tentative_evicted = c.tentative_evicted;
   counters->scans_over_detection_cap = tracker->scans_over_detection_cap;
   return MPTRACK_OK;
 }

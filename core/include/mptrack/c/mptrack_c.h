@@ -101,6 +101,7 @@ typedef struct mptrack_counters {
   uint64_t gap_resets;
   uint64_t measurements_duplicate;
   uint64_t association_cap_hits;
+  uint64_t tentative_evicted; /* tentative tracks deleted to make room for a more likely birth */
   /* Scans refused by mptrack_step() before the tracker saw them: more
    * detections than mptrack_max_detections() (MPTRACK_CAPACITY_EXCEEDED). */
   uint64_t scans_over_detection_cap;
@@ -138,7 +139,7 @@ typedef struct mptrack_tracker mptrack_tracker;
  *   static mptrack_mfbp_storage g_mem;
  *   mptrack_mfbp_init(&g_mem, sizeof g_mem, &params, &tracker, &err);
  * The union members give the alignment the trackers need (8 bytes). */
-#define MPTRACK_MFBP_STORAGE_BYTES 311296u /* 304 KiB: MF-BP, DefaultCaps (~291 KiB) */
+#define MPTRACK_MFBP_STORAGE_BYTES 344064u /* 336 KiB: MF-BP, DefaultCaps (~328 KiB on x86-64) */
 #define MPTRACK_GNN_STORAGE_BYTES 122880u  /* 120 KiB: GNN, DefaultCaps (~114 KiB) */
 typedef union mptrack_mfbp_storage {
   unsigned char bytes[MPTRACK_MFBP_STORAGE_BYTES];
