@@ -6,6 +6,7 @@
 // slant-coordinate region, noise and clutter rate.
 #include "mptrack/mptf/mptf_tracker.h"
 #include "trackers/core_adapter.h"
+#include "trackers/othr_setup.h"
 #include "tracker_registry.h"
 
 namespace mptrack::sim {
@@ -21,35 +22,18 @@ constexpr double kDenseClutter = 250.0;
 class MptfAdapter final : public CoreTrackerAdapter<Tracker> {
  public:
   std::string init(const TrackerSetup& setup) override {
+    const std::string refused = othr_scenario_required(setup, "mptf");
+    if (!refused.empty()) return refused;
     const scenario::ScenarioSpec& s = setup.spec;
-    if (s.space != scenario::MeasurementSpace::kOthr) {
-      return "mptf needs an OTHR scenario (measurement_space \"othr\", e.g. seed002-othr)";
-    }
     MptfParams<float> p;
-    p.num_paths = static_cast<std::uint32_t>(s.othr.paths.size());
+    configure_othr(setup, p);
     double pd_sum = 0.0;
-    for (std::size_t i = 0; i < s.othr.paths.size() && i < p.paths.size(); ++i) {
-      const scenario::OthrPathSpec& ps = s.othr.paths[i];
-      p.paths[i] = {static_cast<float>(ps.tx_height_km), static_cast<float>(ps.rx_height_km)};
-      pd_sum += ps.pd;
-    }
+    for (const scenario::OthrPathSpec& ps : s.othr.paths) pd_sum += ps.pd;
     // A path track does not know its path: the PDA uses the mean p_d.
     const double pd = s.othr.paths.empty() ? 0.75 : pd_sum / static_cast<double>(s.othr.paths.size());
     p.pd = static_cast<float>(pd > 1e-3 ? pd : 1e-3);
     p.fuse_min_paths = p.num_paths < 2 ? p.num_paths : 2u;
-    p.baseline_km = static_cast<float>(s.othr.baseline_km);
-    const PolarRegion<double> r = scenario_region(s);
-    p.region = {static_cast<float>(r.range_min_m), static_cast<float>(r.range_max_m),
-                static_cast<float>(r.azimuth_min_rad), static_cast<float>(r.azimuth_max_rad)};
-    p.range_rate_span_mps = static_cast<float>(s.othr.range_rate_max_mps);
-    p.noise.range_std_m = static_cast<float>(s.sigma_range_m);
-    p.noise.azimuth_std_rad = static_cast<float>(scenario::deg_to_rad(s.sigma_azimuth_deg));
-    p.noise.doppler_std_mps = static_cast<float>(s.othr.sigma_range_rate_mps);
-    double clutter = 0.0;  // the known uniform rate, as for the multipath MF-BP
-    for (const scenario::ClutterSpec& c : s.clutter) clutter += c.mean_count * setup.clutter_scale;
-    p.clutter_mean_count = static_cast<float>(clutter > 1.0 ? clutter : 1.0);
-    p.delete_misses = clutter > kDenseClutter ? 5u : 3u;
-    p.max_gap_s = static_cast<float>(4.0 * s.scan_period_s);
+    p.delete_misses = othr_clutter_mean(setup) > kDenseClutter ? 5u : 3u;
     return init_tracker(p, "mptf");
   }
 };

@@ -8,6 +8,7 @@
 
 #include "mptrack/multipath/multipath_tracker.h"
 #include "trackers/core_adapter.h"
+#include "trackers/othr_setup.h"
 #include "tracker_registry.h"
 
 namespace mptrack::sim {
@@ -42,30 +43,15 @@ std::string apply_overrides(const std::vector<std::string>& overrides, Multipath
 class MultipathAdapter final : public CoreTrackerAdapter<Tracker> {
  public:
   std::string init(const TrackerSetup& setup) override {
-    const scenario::ScenarioSpec& s = setup.spec;
-    if (s.space != scenario::MeasurementSpace::kOthr) {
-      return "mfbp-multipath needs an OTHR scenario (measurement_space \"othr\", e.g. seed002-othr)";
-    }
+    const std::string refused = othr_scenario_required(setup, "mfbp-multipath");
+    if (!refused.empty()) return refused;
     MultipathParams<float> p;
-    p.num_paths = static_cast<std::uint32_t>(s.othr.paths.size());
-    for (std::size_t i = 0; i < s.othr.paths.size() && i < p.paths.size(); ++i) {
-      const scenario::OthrPathSpec& ps = s.othr.paths[i];
-      p.paths[i] = {static_cast<float>(ps.tx_height_km), static_cast<float>(ps.rx_height_km)};
+    configure_othr(setup, p);  // the known uniform rate, as the paper's JDT-VB assumes
+    for (std::size_t i = 0; i < setup.spec.othr.paths.size() && i < p.pd.size(); ++i) {
       // pd 1 is a valid scenario but not a valid model (ln(1 - pd)): just below.
-      p.pd[i] = static_cast<float>(ps.pd < 0.999 ? ps.pd : 0.999);
+      const double pd = setup.spec.othr.paths[i].pd;
+      p.pd[i] = static_cast<float>(pd < 0.999 ? pd : 0.999);
     }
-    p.baseline_km = static_cast<float>(s.othr.baseline_km);
-    const PolarRegion<double> r = scenario_region(s);
-    p.region = {static_cast<float>(r.range_min_m), static_cast<float>(r.range_max_m),
-                static_cast<float>(r.azimuth_min_rad), static_cast<float>(r.azimuth_max_rad)};
-    p.range_rate_span_mps = static_cast<float>(s.othr.range_rate_max_mps);
-    p.noise.range_std_m = static_cast<float>(s.sigma_range_m);
-    p.noise.azimuth_std_rad = static_cast<float>(scenario::deg_to_rad(s.sigma_azimuth_deg));
-    p.noise.doppler_std_mps = static_cast<float>(s.othr.sigma_range_rate_mps);
-    double clutter = 0.0;  // the known uniform rate, as the paper's JDT-VB assumes
-    for (const scenario::ClutterSpec& c : s.clutter) clutter += c.mean_count * setup.clutter_scale;
-    p.clutter_mean_count = static_cast<float>(clutter > 1.0 ? clutter : 1.0);
-    p.max_gap_s = static_cast<float>(4.0 * s.scan_period_s);
     p.smoothing_lag_scans = kDefaultLagScans;
     const std::string error = apply_overrides(setup.mfbp_params, p);
     if (!error.empty()) return error;
