@@ -158,15 +158,15 @@ class RangeMatchedFilter {
     if constexpr (std::is_same_v<Sample, float>) {
       // One flag for the whole profile instead of an exit per sample, so the
       // copy vectorises; a bad profile is still refused before compress().
-      bool finite = true;
+      unsigned finite = 1u;  // bitwise and of the flags: no branch in the copy
       for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
         const float re = src[2 * i];
         const float im = src[2 * i + 1];
-        finite = finite & is_finite(re) & is_finite(im);
+        finite &= static_cast<unsigned>(is_finite(re)) & static_cast<unsigned>(is_finite(im));
         buf_re_[i] = re;
         buf_im_[i] = im;
       }
-      if (!finite) return Status::kInvalidInput;
+      if (finite == 0u) return Status::kInvalidInput;
     } else {
       for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
         buf_re_[i] = static_cast<float>(src[2 * i]) * kInt16ToFloat;

@@ -106,7 +106,9 @@ struct ClutterTable {
 
   std::size_t live() const {
     std::size_t n = 0;
-    for (const auto& c : comps) n += c.alive ? 1u : 0u;
+    for (const auto& c : comps) {
+      if (c.alive) ++n;  // a branch: see mptf/ground_fusion.h FusedTrack::members()
+    }
     return n;
   }
 

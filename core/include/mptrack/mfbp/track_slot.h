@@ -214,7 +214,9 @@ class TrackTable {
   }
   std::size_t live() const {
     std::size_t n = 0;
-    for (const auto& t : slots_) n += t.alive ? 1u : 0u;
+    for (const auto& t : slots_) {
+      if (t.alive) ++n;  // a branch: see mptf/ground_fusion.h FusedTrack::members()
+    }
     return n;
   }
 

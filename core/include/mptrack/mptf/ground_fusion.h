@@ -52,8 +52,12 @@ struct FusedTrack {
   Mat4<T> P = Mat4<T>::Zero();
   std::int32_t measurement_index = -1;
   std::uint32_t members() const {
+    // A branch, not n += (m != 0 ? 1u : 0u): GCC 12's NEON vectoriser
+    // (armhf, -O3) summed that as -3 for 3 members (mptf_tracker_test).
     std::uint32_t n = 0;
-    for (std::uint32_t m : member) n += m != 0 ? 1u : 0u;
+    for (std::uint32_t m : member) {
+      if (m != 0) ++n;
+    }
     return n;
   }
 };
