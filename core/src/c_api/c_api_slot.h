@@ -175,6 +175,8 @@ mptrack_status slot_init(void* memory, std::size_t size, const typename X::Param
     }
     return to_c(valid);
   }
+  // Placement construction in the caller's storage: no allocation (the nm
+  // checks c_api_library_no_heap / m7_c_api_no_heap find no operator new).
   Slot<X>* s = ::new (memory) Slot<X>;
   s->ops = &kOps<X>;
   s->scans_over_detection_cap = 0;

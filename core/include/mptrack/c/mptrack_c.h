@@ -201,7 +201,7 @@ mptrack_status mptrack_mfbp_init(void* memory, size_t size, const mptrack_mfbp_p
 typedef struct mptrack_gnn_params {
   float accel_var_m2ps4;        /* CV white-acceleration variance per axis [m^2/s^4] */
   mptrack_polar_noise noise;    /* Doppler unused */
-  float init_velocity_std_mps;  /* velocity std of a new track [m/s] */
+  float init_velocity_std_mps;  /* velocity std of a track at its birth [m/s] */
   float gate_chi2;              /* gate on nu^T S^-1 nu [-] */
   uint32_t confirm_hits;        /* M of the M-of-N confirmation [-] */
   uint32_t confirm_window;      /* N [scans], <= 32 */
