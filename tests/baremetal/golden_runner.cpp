@@ -15,6 +15,7 @@
 #include "golden_cases.h"
 #include "semihost.h"
 #if defined(__arm__)
+#include "multipath_scan_cost.h"
 #include "scan_cost.h"
 #endif
 
@@ -24,6 +25,8 @@ namespace mptrack::test {
 #undef MPTRACK_GOLDEN_CASE
 #if defined(__arm__)
 extern "C" const char mptrack_golden_scenario_s2_scans1to5[];  // input of the scan-cost report
+extern "C" const unsigned char mptrack_seed002_scans[];             // input of the multipath one
+extern "C" const unsigned char mptrack_seed002_scans_end[];
 #endif
 }  // namespace mptrack::test
 
@@ -134,6 +137,10 @@ extern "C" int app_main() {
   // shift=0; scan_cost.cpp).
   if (!mptrack::baremetal::report_mfbp_scan_cost(mptrack::test::mptrack_golden_scenario_s2_scans1to5)) {
     sh_write("scan cost: FAIL (input or step)\n");
+  }
+  if (!mptrack::baremetal::report_multipath_scan_cost(mptrack::test::mptrack_seed002_scans,
+                                                      mptrack::test::mptrack_seed002_scans_end)) {
+    sh_write("multipath scan cost: FAIL (input or step)\n");
   }
 #endif
   mptrack::baremetal::sh_exit(bad_files == 0);

@@ -42,8 +42,9 @@ struct Target {
   }
 };
 
-struct Scene {
-  std::vector<Target> targets;
+/// Everything of a scene but its targets (no std::vector: the bare-metal
+/// golden case builds one).
+struct SceneConfig {
   mptrack::MultipathParams<double> geometry;  ///< paths, baseline, region, noise
   double pd = 0.75;
   double clutter_mean = 20.0;
@@ -51,9 +52,17 @@ struct Scene {
   std::uint32_t seed = 0x5eed0002u;
 };
 
-/// The four targets of seed 002 Sec. IV (ground coordinates, scan 0 = k 1).
-inline std::vector<Target> seed002_targets() {
-  std::vector<Target> t(4);
+struct Scene : SceneConfig {
+  std::vector<Target> targets;
+};
+
+/// The four targets of seed 002 Sec. IV (ground coordinates, scan 0 = k 1),
+/// into a fixed table (the heap-free golden case uses it directly).
+inline void seed002_target_table(Target (&t)[4]) {
+  for (Target& x : t) {
+    x.first_scan = 0;
+    x.last_scan = 1 << 30;
+  }
   t[0].x0 << 1700.0, 0.10, 0.48, 8.7e-5;
   t[1].x0 << 1750.0, 0.10, 0.48, 8.7e-5;
   t[2].x0 << 1850.0, 0.20, 0.54, 8.7e-5;
@@ -61,7 +70,13 @@ inline std::vector<Target> seed002_targets() {
   t[0].last_scan = t[1].last_scan = 19;
   t[2].first_scan = t[3].first_scan = 9;
   t[2].last_scan = t[3].last_scan = 29;
-  return t;
+}
+
+/// The same four targets as a vector.
+inline std::vector<Target> seed002_targets() {
+  Target t[4];
+  seed002_target_table(t);
+  return std::vector<Target>(t, t + 4);
 }
 
 /// Poisson(mean) by inversion (mean up to a few hundred; exp by repeated products).
@@ -78,15 +93,19 @@ inline int poisson(double mean, Lcg& rng) {
   return k;
 }
 
-/// The scans of the scene, float, has_doppler set (range m, azimuth rad, doppler m/s).
-template <std::size_t N>
-std::vector<mptrack::Scan<float, N>> make_scans(const Scene& s, int num_scans) {
-  Lcg rng{s.seed};
-  const auto& g = s.geometry;
-  std::vector<mptrack::Scan<float, N>> scans(static_cast<std::size_t>(num_scans));
-  for (int k = 0; k < num_scans; ++k) {
-    auto& scan = scans[static_cast<std::size_t>(k)];
-    scan.time_us = 1000000ull + static_cast<std::uint64_t>(k) * static_cast<std::uint64_t>(s.dt_s * 1e6);
+/// The scene's scans one at a time, without the heap (the bare-metal golden
+/// case, tests/golden/cases/multipath.cpp): next() must be called for k = 0,
+/// 1, 2, ... in order, since the noise comes from one running LCG.
+class ScanMaker {
+ public:
+  ScanMaker(const Target* targets, std::size_t num_targets, const SceneConfig& s)
+      : targets_(targets), num_targets_(num_targets), s_(s), rng_{s.seed} {}
+
+  template <std::size_t N>
+  void next(int k, mptrack::Scan<float, N>& scan) {
+    const auto& g = s_.geometry;
+    scan.measurements.clear();
+    scan.time_us = 1000000ull + static_cast<std::uint64_t>(k) * static_cast<std::uint64_t>(s_.dt_s * 1e6);
     scan.has_doppler = true;
     auto push = [&](double r_km, double rd_kmps, double az) {
       if (r_km * 1e3 < g.region.range_min_m || r_km * 1e3 > g.region.range_max_m) return;
@@ -99,29 +118,44 @@ std::vector<mptrack::Scan<float, N>> make_scans(const Scene& s, int num_scans) {
       m.amplitude = 1.0f;
       static_cast<void>(scan.measurements.push_back(m));
     };
-    for (const Target& t : s.targets) {
+    for (std::size_t i = 0; i < num_targets_; ++i) {
+      const Target& t = targets_[i];
       if (k < t.first_scan || k > t.last_scan) continue;
-      const auto x = t.at(k, s.dt_s);
+      const auto x = t.at(k, s_.dt_s);
       for (std::uint32_t p = 0; p < g.num_paths; ++p) {
-        if (rng.uniform() >= s.pd) continue;
+        if (rng_.uniform() >= s_.pd) continue;
         const auto y = mptrack::model::othr_measure(x, g.paths[p], g.baseline_km);
         // Draws in a fixed order (azimuth, range rate, range): function
         // arguments are evaluated in an unspecified order, which differs
         // between compilers' targets (x86-64 and aarch64 gave different scenes).
-        const double n_az = g.noise.azimuth_std_rad * rng.gaussian();
-        const double n_rd = g.noise.doppler_std_mps * 1e-3 * rng.gaussian();
-        const double n_r = g.noise.range_std_m * 1e-3 * rng.gaussian();
+        const double n_az = g.noise.azimuth_std_rad * rng_.gaussian();
+        const double n_rd = g.noise.doppler_std_mps * 1e-3 * rng_.gaussian();
+        const double n_r = g.noise.range_std_m * 1e-3 * rng_.gaussian();
         push(y(0) + n_r, y(1) + n_rd, y(2) + n_az);
       }
     }
-    const int nc = poisson(s.clutter_mean, rng);
+    const int nc = poisson(s_.clutter_mean, rng_);
     for (int c = 0; c < nc; ++c) {
-      const double r = g.region.range_min_m + (g.region.range_max_m - g.region.range_min_m) * rng.uniform();
-      const double rd = g.range_rate_span_mps * (2.0 * rng.uniform() - 1.0);
-      const double az = g.region.azimuth_min_rad + (g.region.azimuth_max_rad - g.region.azimuth_min_rad) * rng.uniform();
+      const double r = g.region.range_min_m + (g.region.range_max_m - g.region.range_min_m) * rng_.uniform();
+      const double rd = g.range_rate_span_mps * (2.0 * rng_.uniform() - 1.0);
+      const double az = g.region.azimuth_min_rad + (g.region.azimuth_max_rad - g.region.azimuth_min_rad) * rng_.uniform();
       push(r * 1e-3, rd * 1e-3, az);
     }
   }
+
+ private:
+  const Target* targets_;
+  std::size_t num_targets_;
+  const SceneConfig& s_;
+  Lcg rng_;
+};
+
+/// The scans of the scene, float, has_doppler set (range m, azimuth rad, doppler m/s).
+template <std::size_t N>
+std::vector<mptrack::Scan<float, N>> make_scans(const Scene& s, int num_scans) {
+  std::vector<mptrack::Scan<float, N>> scans(static_cast<std::size_t>(num_scans));
+  ScanMaker maker(s.targets.data(), s.targets.size(), s);
+  for (int k = 0; k < num_scans; ++k) maker.next(k, scans[static_cast<std::size_t>(k)]);
   return scans;
 }
 
