@@ -3,7 +3,7 @@
 // Table IV cells, generated here exactly as `mptrack-sim --scenario
 // seed002-othr --pd P --clutter-scale S` generates them, with the multipath
 // tracker's Params as its harness adapter sets them (trackers/othr_setup.h,
-// lag 3). The committed file must equal the generator's output byte for byte.
+// lag 3, the cross-range bearing PSD). The committed file must equal the generator's output byte for byte.
 // Regenerate (after an intended generator change):
 //   MPTRACK_GOLDEN_REGENERATE=1 ./seed002_scans_golden_test
 #include <doctest/doctest.h>
@@ -58,6 +58,7 @@ mptrack::MultipathParams<float> harness_params(const sc::ScenarioSpec& spec, dou
     p.pd[i] = static_cast<float>(pd < 0.999 ? pd : 0.999);
   }
   p.smoothing_lag_scans = 3;
+  p.bearing_psd_rad2ps3 = mptrack::sim::othr_cross_range_bearing_psd(p.range_psd_m2ps3, p.region);
   return p;
 }
 
@@ -77,7 +78,7 @@ void put_cell(std::string& out, const CellSpec& cell) {
   }
   for (float v : {p.baseline_km, p.region.range_min_m, p.region.range_max_m, p.region.azimuth_min_rad,
                   p.region.azimuth_max_rad, p.range_rate_span_mps, p.noise.range_std_m, p.noise.azimuth_std_rad,
-                  p.noise.doppler_std_mps, p.clutter_mean_count, p.max_gap_s}) {
+                  p.noise.doppler_std_mps, p.clutter_mean_count, p.max_gap_s, p.bearing_psd_rad2ps3}) {
     put_f32(out, v);
   }
   put_u32(out, p.smoothing_lag_scans);
@@ -187,4 +188,12 @@ TEST_CASE("seed002 scans golden: the host's output hashes for the M7 report to m
       run_like_the_m7<mptrack::MultipathMfbpTracker<float, mptrack::test::othr_file::Nc400Caps>>(r, cell);
     }
   }
+}
+
+TEST_CASE("seed002 harness: the bearing PSD is 1e-8 km^2/s^3 over the squared mid-region range, 1750 km") {
+  sc::ScenarioSpec spec;
+  REQUIRE(sc::builtin_scenario("seed002-othr", spec));
+  const mptrack::MultipathParams<float> p = harness_params(spec, 1.0);
+  // By hand: range PSD 1e-2 m^2/s^3 = 1e-8 km^2/s^3; region 1500..2000 km.
+  CHECK(p.bearing_psd_rad2ps3 == doctest::Approx(1e-8 / (1750.0 * 1750.0)).epsilon(1e-5));
 }

@@ -21,13 +21,24 @@ using Tracker = MultipathMfbpTracker<float, LargeCaps>;
 /// scenario's 16 s period; docs/algorithms/multipath.md §Fixed-lag smoother).
 constexpr std::uint32_t kDefaultLagScans = 3;
 
-/// `--mfbp-param smoothing_lag_scans=N` (0 = the filter's estimate at once).
+/// `--mfbp-param smoothing_lag_scans=N` (0 = the filter's estimate at once),
+/// `--mfbp-param bearing_psd_rad2ps3=Q` (the bearing axis's white-noise PSD).
 std::string apply_overrides(const std::vector<std::string>& overrides, MultipathParams<float>& p) {
   for (const std::string& kv : overrides) {
     const std::size_t eq = kv.find('=');
     const std::string name = kv.substr(0, eq);
+    if (eq != std::string::npos && name == "bearing_psd_rad2ps3") {
+      char* end = nullptr;
+      const double v = std::strtod(kv.c_str() + eq + 1, &end);
+      if (end == kv.c_str() + eq + 1 || *end != '\0' || !(v >= 0.0 && v <= 1.0)) {
+        return "mfbp-multipath: bearing_psd_rad2ps3 = " + kv.substr(eq + 1) + ": must be a number in [0, 1]";
+      }
+      p.bearing_psd_rad2ps3 = static_cast<float>(v);
+      continue;
+    }
     if (eq == std::string::npos || name != "smoothing_lag_scans") {
-      return "mfbp-multipath: unknown parameter \"" + kv + "\" (known: smoothing_lag_scans=N)";
+      return "mfbp-multipath: unknown parameter \"" + kv +
+             "\" (known: smoothing_lag_scans=N, bearing_psd_rad2ps3=Q)";
     }
     char* end = nullptr;
     const unsigned long v = std::strtoul(kv.c_str() + eq + 1, &end, 10);
@@ -53,6 +64,7 @@ class MultipathAdapter final : public CoreTrackerAdapter<Tracker> {
       p.pd[i] = static_cast<float>(pd < 0.999 ? pd : 0.999);
     }
     p.smoothing_lag_scans = kDefaultLagScans;
+    p.bearing_psd_rad2ps3 = othr_cross_range_bearing_psd(p.range_psd_m2ps3, p.region);
     const std::string error = apply_overrides(setup.mfbp_params, p);
     if (!error.empty()) return error;
     return init_tracker(p, "multipath");

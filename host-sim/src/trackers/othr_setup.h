@@ -26,6 +26,18 @@ inline double othr_clutter_mean(const TrackerSetup& setup) {
   return clutter > 1.0 ? clutter : 1.0;
 }
 
+/// The bearing axis's white-noise PSD [rad^2/s^3] for the same acceleration
+/// noise across the line of sight as along it: q_g / g^2, g the middle of
+/// the region's range span (docs/algorithms/multipath.md §Track state).
+/// Seed 002 Sec. IV gives 1e-8 for both axes, but 1e-8 rad^2/s^3 is 3e4
+/// km^2/s^3 across the line of sight at 1750 km (3.7 mrad of bearing spread
+/// per 16 s scan against 3 mrad of azimuth noise): no bearing averaging.
+inline float othr_cross_range_bearing_psd(float range_psd_m2ps3, const PolarRegion<float>& region) {
+  const double q_km2ps3 = static_cast<double>(range_psd_m2ps3) * 1e-6;
+  const double g_km = 0.5e-3 * (static_cast<double>(region.range_min_m) + static_cast<double>(region.range_max_m));
+  return static_cast<float>(q_km2ps3 / (g_km * g_km));
+}
+
 /// Fills the geometry, noise, clutter and gap fields every OTHR Params has.
 template <class Params>
 void configure_othr(const TrackerSetup& setup, Params& p) {
