@@ -18,6 +18,7 @@
 #include "mptrack/classify/sea_classifier.h"
 #include "mptrack/classify/trained_weights.h"
 #include "semihost.h"
+#include "systick_icount.h"
 
 namespace {
 
@@ -25,6 +26,9 @@ namespace cl = mptrack::classify;
 using mptrack::Status;
 using mptrack::baremetal::sh_write;
 using mptrack::baremetal::sh_write_uint;
+using mptrack::baremetal::kInsnPerTick;
+using mptrack::baremetal::systick_now;
+using mptrack::baremetal::ticks_since;
 
 // The classifier's RAM (two ping-pong buffers), constructed in raw .bss
 // storage: a plain `SeaClassifier g;` is constant-initialised with the
@@ -32,14 +36,6 @@ using mptrack::baremetal::sh_write_uint;
 // GCC puts the whole 30 KiB object in .data and its initial image in flash.
 alignas(cl::SeaClassifier) unsigned char g_classifier_storage[sizeof(cl::SeaClassifier)];
 float g_patch[cl::kPatchSize];    // .bss: the caller's input patch, not the classifier's
-
-volatile std::uint32_t* const kSystCsr = reinterpret_cast<volatile std::uint32_t*>(0xE000E010u);
-volatile std::uint32_t* const kSystRvr = reinterpret_cast<volatile std::uint32_t*>(0xE000E014u);
-volatile std::uint32_t* const kSystCvr = reinterpret_cast<volatile std::uint32_t*>(0xE000E018u);
-constexpr std::uint32_t kInsnPerTick = 40u;
-
-std::uint32_t systick_now() { return *kSystCvr; }
-std::uint32_t ticks_since(std::uint32_t start) { return (start - systick_now()) & 0x00FFFFFFu; }
 
 void print_insns(const char* what, std::size_t patch, std::uint32_t ticks) {
   sh_write(what);
@@ -53,13 +49,8 @@ void print_insns(const char* what, std::size_t patch, std::uint32_t ticks) {
 }  // namespace
 
 extern "C" int app_main() {
-  *kSystRvr = 0x00FFFFFFu;  // 24-bit down-counter: 671 M instructions per wrap
-  *kSystCvr = 0u;
-  *kSystCsr = 0x5u;         // enable, processor clock, no interrupt
-  std::uint32_t n = 1000000u;
-  const std::uint32_t t0 = systick_now();
-  __asm__ volatile("1: subs %0, %0, #1\n bne 1b" : "+r"(n) : : "cc");  // 2 instructions per iteration
-  const std::uint32_t cal = ticks_since(t0);
+  mptrack::baremetal::systick_start();
+  const std::uint32_t cal = mptrack::baremetal::icount_calibration_ticks();
   sh_write("icount calibration: 2000000-instruction loop = ");
   sh_write_uint(cal);
   sh_write(" SysTick ticks (40 expected under -icount shift=0)\n");

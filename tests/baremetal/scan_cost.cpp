@@ -20,6 +20,7 @@
 
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "semihost.h"
+#include "systick_icount.h"
 
 namespace mptrack::baremetal {
 
@@ -29,19 +30,6 @@ using Tracker = MfbpTracker<float, DefaultCaps>;
 using S2Scan = Scan<float, DefaultCaps::kMaxMeasurements>;
 Tracker g_tracker;  // .bss, no constructor needed beyond zero (init() sets it up)
 S2Scan g_scan;
-
-volatile std::uint32_t* const kSystCsr = reinterpret_cast<volatile std::uint32_t*>(0xE000E010u);
-volatile std::uint32_t* const kSystRvr = reinterpret_cast<volatile std::uint32_t*>(0xE000E014u);
-volatile std::uint32_t* const kSystCvr = reinterpret_cast<volatile std::uint32_t*>(0xE000E018u);
-constexpr std::uint32_t kInsnPerTick = 40u;  // 1 ns per insn (-icount 0) / 40 ns per 25 MHz tick
-
-void systick_start() {
-  *kSystRvr = 0x00FFFFFFu;
-  *kSystCvr = 0u;
-  *kSystCsr = 0x5u;  // enable, processor clock, no interrupt
-}
-std::uint32_t systick_now() { return *kSystCvr; }
-std::uint32_t ticks_since(std::uint32_t start) { return (start - systick_now()) & 0x00FFFFFFu; }
 
 std::uint32_t parse_hex(const char* p) {
   std::uint32_t v = 0;
@@ -91,11 +79,7 @@ bool load_scan(const char* text, std::uint32_t k) {
 
 bool report_mfbp_scan_cost(const char* s2_golden_text) {
   systick_start();
-  // Calibration: 2 instructions per iteration (subs + bne), 10^6 iterations.
-  std::uint32_t n = 1000000u;
-  const std::uint32_t t0 = systick_now();
-  __asm__ volatile("1: subs %0, %0, #1\n bne 1b" : "+r"(n) : : "cc");
-  const std::uint32_t cal = ticks_since(t0);
+  const std::uint32_t cal = icount_calibration_ticks();
   sh_write("icount calibration: 2000000-instruction loop = ");
   sh_write_uint(cal);
   sh_write(" SysTick ticks (");
