@@ -1,14 +1,17 @@
 // Host latency of the seed 003 patch classifier (docs/algorithms/nemp.md
 // §Cost): features() per detection and target_probability() per NEMP round,
 // with the reference test weights (the cost does not depend on the values).
-// Prints the median and the 99th percentile of `runs` timed calls.
-//   mptrack-bench-classifier [runs]
+// Prints the median and the 99th percentile of `runs` timed calls; with
+// --out DIR also writes DIR/classifier.json (`./run bench`: build/bench-results/).
+//   mptrack-bench-classifier [runs] [--out DIR]
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <string>
 #include <vector>
 
 #include "classify_reference_data.h"
@@ -19,18 +22,48 @@ namespace {
 namespace cl = mptrack::classify;
 using Clock = std::chrono::steady_clock;
 
-void report(const char* what, std::vector<double>& us, std::size_t macs) {
+struct Stats {
+  double p50 = 0.0, p99 = 0.0;
+};
+
+Stats report(const char* what, std::vector<double>& us, std::size_t macs) {
   std::sort(us.begin(), us.end());
-  const double p50 = us[us.size() / 2];
-  const double p99 = us[(us.size() * 99) / 100];
-  std::printf("%-20s p50 %9.2f us  p99 %9.2f us  MACs %zu  (%.2f GMAC/s)\n", what, p50, p99, macs,
-              static_cast<double>(macs) / (p50 * 1e3));
+  const Stats s{us[us.size() / 2], us[(us.size() * 99) / 100]};
+  std::printf("%-20s p50 %9.2f us  p99 %9.2f us  MACs %zu  (%.2f GMAC/s)\n", what, s.p50, s.p99, macs,
+              static_cast<double>(macs) / (s.p50 * 1e3));
+  return s;
+}
+
+/// DIR/classifier.json: latency per detection (features) and per NEMP round (MLP), MACs, sizes.
+bool write_json(const std::string& dir, std::size_t runs, Stats feat, Stats mlp) {
+  const std::string path = dir + "/classifier.json";
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (f == nullptr) return false;
+  std::fprintf(f,
+               "{\n  \"runs\": %zu,\n"
+               "  \"features_us\": {\"p50\": %.3f, \"p99\": %.3f, \"macs\": %zu},\n"
+               "  \"target_probability_us\": {\"p50\": %.4f, \"p99\": %.4f, \"macs\": %zu},\n"
+               "  \"parameters\": %zu,\n  \"parameter_bytes\": %zu,\n  \"scratch_bytes\": %zu,\n"
+               "  \"object_bytes\": %zu\n}\n",
+               runs, feat.p50, feat.p99, cl::SeaClassifier::kFeatureMacs, mlp.p50, mlp.p99,
+               cl::SeaClassifier::kMlpMacs, cl::kNumParameters, cl::kNumParameters * sizeof(float),
+               cl::SeaClassifier::kScratchBytes, sizeof(cl::SeaClassifier));
+  return std::fclose(f) == 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::size_t runs = argc > 1 ? static_cast<std::size_t>(std::atol(argv[1])) : 300;
+  std::size_t runs = 300;
+  std::string out_dir;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
+      out_dir = argv[++i];
+    } else {
+      runs = static_cast<std::size_t>(std::atol(argv[i]));
+    }
+  }
+  if (runs == 0) return 2;
   static cl::SeaClassifier c;
   if (c.init(mptrack::test::classify_ref::weights()) != mptrack::Status::kOk) return 1;
   static std::array<float, cl::kPatchSize> patch{};
@@ -49,9 +82,13 @@ int main(int argc, char** argv) {
     t_feat[r] = std::chrono::duration<double, std::micro>(t1 - t0).count();
     t_mlp[r] = std::chrono::duration<double, std::micro>(t2 - t1).count() / 100.0;
   }
-  report("features()", t_feat, cl::SeaClassifier::kFeatureMacs);
-  report("target_probability()", t_mlp, cl::SeaClassifier::kMlpMacs);
+  const Stats feat = report("features()", t_feat, cl::SeaClassifier::kFeatureMacs);
+  const Stats mlp = report("target_probability()", t_mlp, cl::SeaClassifier::kMlpMacs);
   std::printf("parameters %zu (%zu bytes float32), scratch %zu bytes, object %zu bytes\n", cl::kNumParameters,
               cl::kNumParameters * sizeof(float), cl::SeaClassifier::kScratchBytes, sizeof(cl::SeaClassifier));
+  if (!out_dir.empty() && !write_json(out_dir, runs, feat, mlp)) {
+    std::fprintf(stderr, "%s/classifier.json: cannot write\n", out_dir.c_str());
+    return 1;
+  }
   return 0;
 }

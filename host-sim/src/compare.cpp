@@ -126,6 +126,36 @@ nlohmann::ordered_json track_scores_json(const TrackScoreTotals& t) {
           {"targets_never_tracked", t.targets - t.targets_tracked}};
 }
 
+// The seed 003 Sec. IV-A columns of one row (docs/algorithms/metrics.md
+// §AMOTA, §RMSE, §MOSPA with a Mahalanobis base distance).
+nlohmann::ordered_json seed003_metrics_json(const CompareRow& x) {
+  const TrackScoreTotals& t = x.track_scores;
+  return {{"amota", t.amota()},
+          {"ids", t.per_target(t.id_switches)},
+          {"frag", t.per_target(t.fragmentations)},
+          {"rmse_range_m", t.rmse_range_m()},
+          {"rmse_velocity_mps", t.rmse_velocity_mps()},
+          {"mospa_mahalanobis", x.mean_ospa_mahalanobis},
+          {"mospa", x.mean_ospa}};
+}
+
+std::string seed003_metrics_markdown(const CompareResult& r) {
+  std::string s = "\n| tracker | AMOTA | IDS / target | Frag / target | RMSE range [m] | RMSE velocity [m/s] "
+                  "| MOSPA (Mahalanobis) | MOSPA [m] |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const CompareRow& x : r.rows) {
+    const TrackScoreTotals& t = x.track_scores;
+    s += "| " + x.tracker + " | " + fmt("%.3f", t.amota()) + " | " + fmt("%.3f", t.per_target(t.id_switches)) +
+         " | " + fmt("%.3f", t.per_target(t.fragmentations)) + " | " + fmt("%.2f", t.rmse_range_m()) + " | " +
+         fmt("%.3f", t.rmse_velocity_mps()) + " | " + fmt("%.2f", x.mean_ospa_mahalanobis) + " | " +
+         fmt("%.2f", x.mean_ospa) + " |\n";
+  }
+  s += "\nseed 003 metrics (docs/algorithms/metrics.md): AMOTA = MOTA averaged over 40 recall thresholds of the "
+       "track existence (Weng et al.), mean per run; RMSE over target-scans covered by a valid track; MOSPA "
+       "(Mahalanobis) = OSPA with base distance in (range, range rate) whitened by the scenario's noise, "
+       "p = 2, c = 9.4.\n";
+  return s;
+}
+
 std::string track_scores_markdown(const CompareResult& r) {
   std::string s = "\n| tracker | TTL [scans] | breaks / target | ID switches / target | TPD | NVT | false tracks / run "
                   "| targets never tracked |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -169,6 +199,7 @@ nlohmann::ordered_json compare_to_json(const CompareResult& r) {
                     {"steps_not_ok", x.steps_not_ok()},
                     {"measurement_checksum", hex64(x.measurement_checksum)},
                     {"track_scores", track_scores_json(x.track_scores)},
+                    {"seed003_metrics", seed003_metrics_json(x)},
                     {"ospa_per_scan", x.ospa_per_scan}});
   }
   return json{{"scenario", r.scenario},
@@ -207,6 +238,7 @@ std::string compare_to_markdown(const CompareResult& r) {
        "tracks with no target within c. Latency: wall time of one step() on this host (a smoother's p50 is a "
        "buffering step). errors: steps returning an error status.\n";
   s += track_scores_markdown(r);
+  s += seed003_metrics_markdown(r);
   return s;
 }
 

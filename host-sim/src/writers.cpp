@@ -129,6 +129,12 @@ void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
   j["mospa"] = s.mean_ospa;
   j["ids"] = t.per_target(t.id_switches);
   j["frag"] = t.per_target(t.fragmentations);
+  // seed 003 Sec. IV-A (docs/algorithms/metrics.md §AMOTA, §MOSPA with a
+  // Mahalanobis base distance); "mospa" above stays the Euclidean mean OSPA [m].
+  j["amota"] = t.amota();
+  j["rmse_range_m"] = t.rmse_range_m();
+  j["rmse_velocity_mps"] = t.rmse_velocity_mps();
+  j["mospa_mahalanobis"] = s.mean_ospa_mahalanobis;
   j["track_scores"] = {{"gate_m", s.scoring.gate_m},
                        {"min_track_scans", s.scoring.min_track_scans},
                        {"nvt", t.nvt()},

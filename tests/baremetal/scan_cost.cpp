@@ -79,11 +79,7 @@ bool load_scan(const char* text, std::uint32_t k) {
 
 bool report_mfbp_scan_cost(const char* s2_golden_text) {
   systick_start();
-  // Calibration: 2 instructions per iteration (subs + bne), 10^6 iterations.
-  std::uint32_t n = 1000000u;
-  const std::uint32_t t0 = systick_now();
-  __asm__ volatile("1: subs %0, %0, #1\n bne 1b" : "+r"(n) : : "cc");
-  const std::uint32_t cal = ticks_since(t0);
+  const std::uint32_t cal = icount_calibration_ticks();
   sh_write("icount calibration: 2000000-instruction loop = ");
   sh_write_uint(cal);
   sh_write(" SysTick ticks (");

@@ -224,30 +224,45 @@ TEST_CASE("NEMP params are validated; the tracker refuses evidence without a sta
 }
 
 TEST_CASE("NEMP: classifier features and NEMP association allocate nothing") {
-  auto head = std::make_unique<ConstantHead>(-1.0f);
-  auto nemp = std::make_unique<Nemp>();
-  REQUIRE(nemp->init(&head->classifier, mfbp::NempParams<float>{}) == Status::kOk);
-  auto trk = std::make_unique<Tracker>();
-  MfbpParams<float> p = seed000_default_params<float>();
-  p.uniform_rate_per_scan = 10.0f;
-  REQUIRE(trk->init(p) == Status::kOk);
-  REQUIRE(trk->attach_nemp(nemp.get()) == Status::kOk);
-  auto ev = std::make_unique<Evidence>();
-  auto scan = std::make_unique<TestScan>();
-  auto patch = std::make_unique<std::array<float, classify::kPatchSize>>();
-  for (std::size_t i = 0; i < classify::kPatchSize; ++i) (*patch)[i] = test::classify_ref::kPatch2[i];
-  mfbp_test::Lcg rng;
-  std::size_t allocs = 0;
-  for (int k = 0; k < 12; ++k) {
-    mfbp_test::make_scan(rng, k, 10, *scan);
-    test::NoAllocScope guard;
-    for (std::size_t j = 0; j < scan->measurements.size(); ++j) {
-      ev->has_patch[j] = head->classifier.features(patch->data(), ev->features[j]) == Status::kOk;
+  // The reference weights (w depends on the belief, so every round changes
+  // the factors), the plain and the discounted DS rule, and the largest
+  // round count: every branch of NempState::update() runs under the guard.
+  auto classifier = std::make_unique<classify::SeaClassifier>();
+  REQUIRE(classifier->init(test::classify_ref::weights()) == Status::kOk);
+  mfbp::NempParams<float> plain;
+  mfbp::NempParams<float> discounted;
+  discounted.rounds = mfbp::kMaxNempRounds;
+  discounted.nn_reliability = 0.7f;
+  for (const mfbp::NempParams<float>& np : {plain, discounted}) {
+    auto nemp = std::make_unique<Nemp>();
+    REQUIRE(nemp->init(classifier.get(), np) == Status::kOk);
+    auto trk = std::make_unique<Tracker>();
+    MfbpParams<float> p = seed000_default_params<float>();
+    p.uniform_rate_per_scan = 10.0f;
+    REQUIRE(trk->init(p) == Status::kOk);
+    REQUIRE(trk->attach_nemp(nemp.get()) == Status::kOk);
+    auto ev = std::make_unique<Evidence>();
+    auto scan = std::make_unique<TestScan>();
+    auto patch = std::make_unique<std::array<float, classify::kPatchSize>>();
+    for (std::size_t i = 0; i < classify::kPatchSize; ++i) (*patch)[i] = test::classify_ref::kPatch2[i];
+    mfbp_test::Lcg rng;
+    std::size_t allocs = 0;
+    for (int k = 0; k < 12; ++k) {
+      mfbp_test::make_scan(rng, k, 10, *scan);
+      test::NoAllocScope guard;
+      for (std::size_t j = 0; j < scan->measurements.size(); ++j) {
+        ev->has_patch[j] = classifier->features(patch->data(), ev->features[j]) == Status::kOk;
+      }
+      const Status s = trk->step(*scan, *ev);
+      allocs += guard.allocations();
+      CHECK(s == Status::kOk);
     }
-    const Status s = trk->step(*scan, *ev);
-    allocs += guard.allocations();
-    CHECK(s == Status::kOk);
+    CHECK(allocs == 0u);
+    CHECK(trk->bp_runs() > 0u);
+    bool moved = false;  // some round changed a clutter message, so the rounds ran
+    for (std::size_t k = 0; k < TestCaps::kMaxWindow; ++k) {
+      for (std::size_t c = 0; c < 10; ++c) moved = moved || nemp->log_factor(k, c) != 0.0f;
+    }
+    CHECK(moved);
   }
-  CHECK(allocs == 0u);
-  CHECK(trk->bp_runs() > 0u);
 }

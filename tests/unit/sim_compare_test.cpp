@@ -73,20 +73,25 @@ TEST_CASE("compare: a tiny seed001 run gives one row per tracker, in order, with
       CAPTURE(key);
       CHECK(row.contains(key));
     }
+    for (const char* key : {"amota", "ids", "frag", "rmse_range_m", "rmse_velocity_mps", "mospa_mahalanobis",
+                            "mospa"}) {
+      CAPTURE(key);
+      CHECK(row["seed003_metrics"].contains(key));
+    }
     CHECK(row["latency_us"].contains("p50"));
     CHECK(row["latency_us"].contains("p99"));
     CHECK(row["latency_us"].contains("max"));
     CHECK(row["latency_us"]["samples"] == 12);  // 2 runs x 6 scans
     CHECK(row["ospa_per_scan"].size() == 6);
   }
-  // Each of the two markdown tables (metrics, track scores) has exactly one line per tracker.
+  // Each of the three markdown tables (metrics, track scores, seed 003 metrics) has exactly one line per tracker.
   std::ifstream md(cfg.out_dir + "/compare.md");
   std::string line;
   int rows = 0;
   while (std::getline(md, line)) {
     for (const auto& t : cfg.trackers) rows += line.rfind("| " + t + " |", 0) == 0 ? 1 : 0;
   }
-  CHECK(rows == 2 * 4);
+  CHECK(rows == 3 * 4);
   CHECK(std::filesystem::exists(cfg.out_dir + "/ospa.svg"));
 }
 

@@ -201,3 +201,47 @@ TEST_CASE("track scoring params: OTHR scenarios count tracks from 5 scans, gate 
   spec.space = sc::MeasurementSpace::kPolar;
   CHECK(track_scoring_params(spec, 631.0).min_track_scans == 1);
 }
+
+TEST_CASE("track scoring: range and velocity RMSE over the covered scans are worked out by hand") {
+  // Target at 1000 m moving +2 m/s along x. Scan 1: track 3 m long in range,
+  // 1 m/s slow (|dv|^2 = 1); scan 2: 4 m short, 1 m/s of cross-range
+  // velocity (|dv|^2 = 1). RMSE range = sqrt((9 + 16) / 2), velocity = 1.
+  Run r(2);
+  for (std::uint32_t k = 1; k <= 2; ++k) {
+    r.target(k, 1, 1000.0, 0.0);
+    r.scans[k - 1].truth.back().x.vx = 2.0;
+  }
+  r.track(1, 7, 1003.0, 0.0);
+  r.est[0].tracks.back().vx = 1.0;
+  r.track(2, 7, 996.0, 0.0);
+  r.est[1].tracks.back().vx = 2.0;
+  r.est[1].tracks.back().vy = 1.0;
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(50.0)));
+  CHECK(t.rmse_range_m() == doctest::Approx(std::sqrt(12.5)));
+  CHECK(t.rmse_velocity_mps() == doctest::Approx(1.0));
+}
+
+TEST_CASE("track scoring: RMSE ignores scans where no valid track covers the target") {
+  Run r(2);
+  for (std::uint32_t k = 1; k <= 2; ++k) r.target(k, 1, 1000.0, 0.0);
+  r.track(1, 7, 1002.0, 0.0);
+  r.track(2, 7, 1400.0, 0.0);  // beyond the gate: scan 2 is not covered
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(50.0)));
+  CHECK(t.covered_scans == 1);
+  CHECK(t.rmse_range_m() == doctest::Approx(2.0));
+}
+
+TEST_CASE("track scoring: the AMOTA of every run is averaged over runs") {
+  // Run 1 tracked perfectly (AMOTA 1); run 2 has one target-scan and no track (0).
+  Run a(1), b(1);
+  a.target(1, 1, 1000.0, 0.0);
+  a.track(1, 7, 1000.0, 0.0);
+  a.est[0].tracks.back().existence = 1.0;
+  b.target(1, 1, 1000.0, 0.0);
+  TrackScoreTotals t;
+  t.add(score_run(a.scans, a.est, gate(50.0)));
+  t.add(score_run(b.scans, b.est, gate(50.0)));
+  CHECK(t.amota() == doctest::Approx(0.5));
+}

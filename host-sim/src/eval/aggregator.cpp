@@ -136,6 +136,7 @@ void Aggregator::add_eval_scan(const ScanMetrics& m) {
   ++sum_.eval_scan_count;
   ospa_ += m.ospa;
   gospa_ += m.gospa;
+  ospa_mahalanobis_ += m.ospa_mahalanobis;
   loc_ += m.gospa_localisation;
   missed_pow_ += m.gospa_missed;
   false_pow_ += m.gospa_false;
@@ -155,6 +156,7 @@ Summary Aggregator::summary() const {
   const double n = s.eval_scan_count > 0 ? static_cast<double>(s.eval_scan_count) : 1.0;
   s.mean_ospa = ospa_ / n;
   s.mean_gospa = gospa_ / n;
+  s.mean_ospa_mahalanobis = ospa_mahalanobis_ / n;
   s.gospa_localisation = loc_ / n;
   s.gospa_missed = missed_pow_ / n;
   s.gospa_false = false_pow_ / n;

@@ -49,6 +49,7 @@ struct SummaryHeader {
 struct Summary : SummaryHeader {
   double mean_ospa = 0.0;       ///< over runs x evaluation scans [m]
   double mean_gospa = 0.0;      ///< [m]
+  double mean_ospa_mahalanobis = 0.0;  ///< MOSPA with the Mahalanobis base distance (seed 003) [-]
   double gospa_localisation = 0.0;  ///< mean per evaluation scan [m^p]
   double gospa_missed = 0.0;        ///< mean per evaluation scan [m^p] = c^p/2 x missed
   double gospa_false = 0.0;         ///< mean per evaluation scan [m^p] = c^p/2 x false
@@ -109,6 +110,7 @@ class Aggregator {
   double ospa_ = 0.0, gospa_ = 0.0, loc_ = 0.0, missed_pow_ = 0.0, false_pow_ = 0.0;
   double missed_ = 0.0, false_n_ = 0.0, card_ = 0.0, nft_ = 0.0, confirmed_ = 0.0, truths_ = 0.0;
   double measurements_ = 0.0, tracks_found_ = 0.0;
+  double ospa_mahalanobis_ = 0.0;
   std::uint64_t delivered_ = 0;
   std::vector<double> latency_us_;
   std::vector<double> confirmed_sq_;  ///< sum over runs of confirmed^2, index scan-1

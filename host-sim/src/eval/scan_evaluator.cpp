@@ -18,9 +18,10 @@
 
 namespace mptrack::sim {
 
-ScanEvaluator::ScanEvaluator(double cutoff_m, double order)
+ScanEvaluator::ScanEvaluator(double cutoff_m, double order, const MahalanobisOspaParams& mahalanobis)
     : ospa_(std::make_unique<OspaMetric<double, kMaxEvalPoints>>()),
-      gospa_(std::make_unique<GospaMetric<double, kMaxEvalPoints>>()) {
+      gospa_(std::make_unique<GospaMetric<double, kMaxEvalPoints>>()),
+      mahalanobis_(std::make_unique<MahalanobisOspa>(mahalanobis)) {
   const MetricParams<double> params{order, cutoff_m};
   if (ospa_->init(params) != Status::kOk || gospa_->init(params) != Status::kOk) {
     throw std::runtime_error("OSPA parameters rejected (need p >= 1, c > 0)");
@@ -70,6 +71,7 @@ ScanMetrics ScanEvaluator::evaluate(const scenario::SimScan& scan, const Estimat
     m.matched.push_back(ObjectError{scan.truth[i].target_id, (truths[i] - tracks[j]).norm()});
   }
   score_car(scan, track_refs, m);
+  m.ospa_mahalanobis = mahalanobis_->evaluate(scan, est);
   return m;
 }
 

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "eval/mahalanobis_ospa.h"
 #include "mptrack/metrics/gospa.h"
 #include "mptrack/metrics/ospa.h"
 #include "mptrack/scenario/generator.h"
@@ -42,13 +43,16 @@ struct ScanMetrics {
   std::uint32_t car_correct = 0;   ///< ... whose matched track picked exactly that measurement
   std::uint32_t car_id_correct = 0;  ///< ... picked by a track labelled with that target (identity CAR)
   std::vector<ObjectError> matched;  ///< truths within c of their OSPA-assigned track (per-object RMSE)
+  double ospa_mahalanobis = 0.0;   ///< OSPA with the Mahalanobis base distance (mahalanobis_ospa.h) [-]
 };
 
 class ScanEvaluator {
  public:
   /// cutoff_m: OSPA/GOSPA c [m]; order: p. Throws std::runtime_error if the
   /// metric rejects them (p >= 1, c > 0).
-  explicit ScanEvaluator(double cutoff_m = kOspaCutoff_m, double order = kOspaOrder);
+  /// mahalanobis: the base covariance, c and p of ScanMetrics::ospa_mahalanobis.
+  explicit ScanEvaluator(double cutoff_m = kOspaCutoff_m, double order = kOspaOrder,
+                         const MahalanobisOspaParams& mahalanobis = MahalanobisOspaParams{});
   /// Forgets the track labels of the identity CAR; call before each run.
   void begin_run() { labels_.clear(); }
   /// Evaluates the confirmed tracks of `est` against the truth of `scan`.
@@ -65,6 +69,7 @@ class ScanEvaluator {
   // The metric objects hold a kMaxEvalPoints^2 cost matrix: keep them on the heap.
   std::unique_ptr<OspaMetric<double, kMaxEvalPoints>> ospa_;
   std::unique_ptr<GospaMetric<double, kMaxEvalPoints>> gospa_;
+  std::unique_ptr<MahalanobisOspa> mahalanobis_;
   std::map<std::uint32_t, std::uint32_t> labels_;  ///< track id -> target id (identity CAR)
 };
 

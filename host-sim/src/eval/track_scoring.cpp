@@ -2,32 +2,26 @@
 #include "eval/track_scoring.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
-#include "mptrack/metrics/assignment.h"
+#include "eval/amota.h"
 
 namespace mptrack::sim {
 
 namespace {
 
-constexpr std::size_t kMaxScored = 256;
 constexpr double kTwoPi = 6.283185307179586;
-constexpr std::uint32_t kNoTarget = 0xffffffffU;
 
-using Solver = AssignmentSolver<double, kMaxScored>;
+}  // namespace
 
-/// track id -> target id (or kNoTarget) for one scan's confirmed tracks.
-using ScanAssignment = std::map<std::uint32_t, std::uint32_t>;
-
-/// Optimal assignment of confirmed tracks to truths, cost min(d, gate):
-/// pairs at or beyond the gate are then dropped (OSPA's cut-off trick, which
-/// never trades a within-gate pair for a cheaper out-of-gate one).
-ScanAssignment assign_scan(const scenario::SimScan& scan, const EstimateOut& est, double gate_m, Solver& solver) {
+ScanAssignment match_scan(const scenario::SimScan& scan, const EstimateOut& est, double gate_m,
+                          double min_existence, ScoringSolver& solver) {
   std::vector<const TrackOut*> tracks;
   for (const TrackOut& t : est.tracks) {
-    if (t.confirmed) tracks.push_back(&t);
+    if (t.confirmed && t.existence >= min_existence) tracks.push_back(&t);
   }
   ScanAssignment out;
   for (const TrackOut* t : tracks) out[t->id] = kNoTarget;
@@ -50,6 +44,8 @@ ScanAssignment assign_scan(const scenario::SimScan& scan, const EstimateOut& est
   }
   return out;
 }
+
+namespace {
 
 struct TrackTally {
   std::uint32_t scans = 0;                       ///< confirmed scans
@@ -95,6 +91,10 @@ void add_polar_error(const scenario::KinematicState& truth, const TrackOut& trac
   s.abs_range_err_sum_m += std::fabs(std::hypot(track.px, track.py) - std::hypot(truth.px, truth.py));
   const double d = std::atan2(track.py, track.px) - std::atan2(truth.py, truth.px);
   s.abs_bearing_err_sum_rad += std::fabs(std::remainder(d, kTwoPi));
+  const double dr = std::hypot(track.px, track.py) - std::hypot(truth.px, truth.py);
+  const double dvx = track.vx - truth.vx, dvy = track.vy - truth.vy;
+  s.sq_range_err_sum_m2 += dr * dr;
+  s.sq_velocity_err_sum_m2ps2 += dvx * dvx + dvy * dvy;
 }
 
 /// Follows one target through the run: coverage, first coverage, switches.
@@ -135,9 +135,11 @@ TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, doub
 RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
                         const TrackScoringParams& params) {
   const std::size_t n = std::min(scans.size(), by_scan.size());
-  auto solver = std::make_unique<Solver>();  // a 256 x 256 cost matrix: heap, not stack
+  auto solver = std::make_unique<ScoringSolver>();  // a 256 x 256 cost matrix: heap, not stack
   std::vector<ScanAssignment> per_scan(n);
-  for (std::size_t i = 0; i < n; ++i) per_scan[i] = assign_scan(scans[i], by_scan[i], params.gate_m, *solver);
+  // -inf: every confirmed track, whatever existence its tracker reports.
+  const double all = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) per_scan[i] = match_scan(scans[i], by_scan[i], params.gate_m, all, *solver);
 
   RunTrackScore run;
   const std::map<std::uint32_t, bool> valid = classify_tracks(per_scan, params.min_track_scans, run);
@@ -164,6 +166,7 @@ RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::
     }
   }
   for (const TargetFollower& f : followers) run.targets.push_back(f.score);
+  run.amota = run_amota(scans, by_scan, AmotaParams{params.gate_m, kAmotaRecallPoints}, *solver);
   return run;
 }
 
@@ -185,7 +188,10 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
     track_breaks += t.track_breaks;
     abs_range_err_sum_m += t.abs_range_err_sum_m;
     abs_bearing_err_sum_rad += t.abs_bearing_err_sum_rad;
+    sq_range_err_sum_m2 += t.sq_range_err_sum_m2;
+    sq_velocity_err_sum_m2ps2 += t.sq_velocity_err_sum_m2ps2;
   }
+  amota_sum += run.amota;
 }
 
 namespace {
@@ -199,5 +205,8 @@ double TrackScoreTotals::ttl_scans() const { return ratio(static_cast<double>(la
 double TrackScoreTotals::aee_range_m() const { return ratio(abs_range_err_sum_m, covered_scans); }
 double TrackScoreTotals::aee_bearing_rad() const { return ratio(abs_bearing_err_sum_rad, covered_scans); }
 double TrackScoreTotals::per_target(std::uint64_t count) const { return ratio(static_cast<double>(count), targets); }
+double TrackScoreTotals::rmse_range_m() const { return std::sqrt(ratio(sq_range_err_sum_m2, covered_scans)); }
+double TrackScoreTotals::rmse_velocity_mps() const { return std::sqrt(ratio(sq_velocity_err_sum_m2ps2, covered_scans)); }
+double TrackScoreTotals::amota() const { return ratio(amota_sum, runs); }
 
 }  // namespace mptrack::sim

@@ -9,7 +9,10 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <vector>
+
+#include "mptrack/metrics/assignment.h"
 
 #include "mptrack/scenario/generator.h"
 #include "tracker_adapter.h"
@@ -38,6 +41,8 @@ struct TargetScore {
   std::uint32_t track_breaks = 0;    ///< id changed and the previous track no longer existed
   double abs_range_err_sum_m = 0.0;      ///< sum over covered scans of |ground range error| [m]
   double abs_bearing_err_sum_rad = 0.0;  ///< sum over covered scans of |bearing error| [rad]
+  double sq_range_err_sum_m2 = 0.0;      ///< sum over covered scans of (ground range error)^2 [m^2]
+  double sq_velocity_err_sum_m2ps2 = 0.0;  ///< sum over covered scans of |velocity error|^2 [m^2/s^2]
 };
 
 /// Everything scored in one run.
@@ -47,7 +52,22 @@ struct RunTrackScore {
   std::uint32_t valid_tracks = 0;     ///< scored tracks assigned to one target for at least half their scans
   std::uint32_t false_tracks = 0;     ///< scored tracks that are not valid (clutter, ghosts)
   std::uint32_t targets_with_valid_track = 0;  ///< NVT of the run: distinct targets some valid track follows
+  double amota = 0.0;                 ///< AMOTA of the run (eval/amota.h)
 };
+
+/// track id -> target id (kNoTarget: unmatched) for one scan's tracks.
+using ScanAssignment = std::map<std::uint32_t, std::uint32_t>;
+inline constexpr std::uint32_t kNoTarget = 0xffffffffU;
+inline constexpr std::size_t kMaxScored = 256;
+using ScoringSolver = AssignmentSolver<double, kMaxScored>;
+
+/// Matches the confirmed tracks of `est` with existence >= min_existence to
+/// the truths of `scan`: optimal assignment of cost min(Euclidean distance,
+/// gate); pairs at or beyond the gate are dropped (OSPA's cut-off trick,
+/// which never trades a within-gate pair for a cheaper out-of-gate one).
+/// Throws std::runtime_error if a scan has more than kMaxScored tracks or truths.
+ScanAssignment match_scan(const scenario::SimScan& scan, const EstimateOut& est, double gate_m,
+                          double min_existence, ScoringSolver& solver);
 
 /// Scores a run: scans[k-1] holds the truth of scan k, by_scan[k-1] the
 /// tracker's estimate (only confirmed tracks count). Each scan matches
@@ -66,6 +86,8 @@ struct TrackScoreTotals {
   std::uint64_t valid_tracks = 0, false_tracks = 0, targets_with_valid_track = 0;
   std::uint64_t id_switches = 0, fragmentations = 0, track_breaks = 0;
   double abs_range_err_sum_m = 0.0, abs_bearing_err_sum_rad = 0.0;
+  double sq_range_err_sum_m2 = 0.0, sq_velocity_err_sum_m2ps2 = 0.0;
+  double amota_sum = 0.0;                          ///< sum of the runs' AMOTA
 
   void add(const RunTrackScore& run);
   double nvt() const;                ///< targets with a valid track, mean per run
@@ -75,6 +97,9 @@ struct TrackScoreTotals {
   double aee_range_m() const;        ///< mean |ground range error| over covered target-scans [m]
   double aee_bearing_rad() const;    ///< mean |bearing error| over covered target-scans [rad]
   double per_target(std::uint64_t count) const;  ///< count / targets (0 if none)
+  double rmse_range_m() const;       ///< RMS ground range error over covered target-scans [m]
+  double rmse_velocity_mps() const;  ///< RMS of |velocity error| over covered target-scans [m/s]
+  double amota() const;              ///< AMOTA, mean over runs (seed 003 Sec. IV-A)
 };
 
 }  // namespace mptrack::sim

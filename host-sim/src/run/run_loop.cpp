@@ -91,7 +91,7 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
 std::vector<Summary> run_loop(ScanSource& source, const LoopConfig& cfg, const std::vector<RunObserver*>& observers) {
   check_loop_config(cfg);
   const scenario::ScenarioSpec& spec = source.spec();
-  ScanEvaluator evaluator(cfg.ospa_cutoff_m, cfg.ospa_order);
+  ScanEvaluator evaluator(cfg.ospa_cutoff_m, cfg.ospa_order, mahalanobis_ospa_params(spec));
   std::vector<Aggregator> aggregators;
   for (const std::string& name : cfg.trackers) {
     aggregators.emplace_back(SummaryHeader{spec.name, name, cfg.runs, spec.num_scans, cfg.seed, cfg.clutter_scale,

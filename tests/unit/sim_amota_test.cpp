@@ -1,0 +1,151 @@
+// AMOTA (host-sim/src/eval/amota.h) on hand-built runs: one behaviour per
+// case; TP/FP/FN/IDS counted by hand, MOTA = 1 - (FP + FN + IDS) / num_gt and
+// AMOTA = (1/L) sum over r = 1/L..1 of MOTA_r (Weng et al., IROS 2020).
+#include <doctest/doctest.h>
+
+#include <memory>
+#include <vector>
+
+#include "eval/amota.h"
+#include "sim_test_truth.h"
+
+using namespace mptrack::sim;
+namespace sc = mptrack::scenario;
+using sim_test::truth_at;
+
+namespace {
+
+struct Run {
+  std::vector<sc::SimScan> scans;
+  std::vector<EstimateOut> est;
+  explicit Run(std::size_t n) : scans(n), est(n) {
+    for (std::size_t i = 0; i < n; ++i) scans[i].scan = est[i].scan = static_cast<std::uint32_t>(i + 1);
+  }
+  void target(std::uint32_t k, std::uint32_t id, double x) { scans[k - 1].truth.push_back(truth_at(id, x, 0.0, -1)); }
+  void track(std::uint32_t k, std::uint32_t id, double x, double existence, bool confirmed = true) {
+    TrackOut t;
+    t.id = id;
+    t.px = x;
+    t.existence = existence;
+    t.confirmed = confirmed;
+    est[k - 1].tracks.push_back(t);
+  }
+};
+
+double amota(const Run& r, std::uint32_t recall_points) {
+  auto solver = std::make_unique<ScoringSolver>();
+  return run_amota(r.scans, r.est, AmotaParams{50.0, recall_points}, *solver);
+}
+
+MotCounts counts(const Run& r, double min_existence) {
+  auto solver = std::make_unique<ScoringSolver>();
+  return mot_counts(r.scans, r.est, 50.0, min_existence, *solver);
+}
+
+}  // namespace
+
+TEST_CASE("AMOTA: a track on its target every scan and nothing else scores 1") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) {
+    r.target(k, 1, 1000.0);
+    r.track(k, 7, 1003.0, 0.9);
+  }
+  CHECK(amota(r, 40) == doctest::Approx(1.0));
+}
+
+TEST_CASE("MOT counts: a false track in two of four scans gives FP 2 and MOTA 1 - 2/4") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) {
+    r.target(k, 1, 1000.0);
+    r.track(k, 7, 1003.0, 0.9);
+  }
+  r.track(1, 8, 5000.0, 0.3);
+  r.track(2, 8, 5000.0, 0.3);
+  const MotCounts c = counts(r, 0.0);
+  CHECK(c.truths == 4);
+  CHECK(c.tp == 4);
+  CHECK(c.fp == 2);
+  CHECK(c.fn == 0);
+  CHECK(c.ids == 0);
+  CHECK(c.mota() == doctest::Approx(0.5));
+}
+
+TEST_CASE("AMOTA: a false track less confident than every true positive is thresholded away") {
+  // TP scores {0.9 x 4}: every recall threshold sits at 0.9, above the false
+  // track's 0.3, so MOTA_r = 1 for r = 1/4..1 although MOTA at 0 is 0.5.
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) {
+    r.target(k, 1, 1000.0);
+    r.track(k, 7, 1003.0, 0.9);
+  }
+  r.track(1, 8, 5000.0, 0.3);
+  r.track(2, 8, 5000.0, 0.3);
+  CHECK(amota(r, 4) == doctest::Approx(1.0));
+}
+
+TEST_CASE("AMOTA: a recall the tracker never reaches contributes 0") {
+  // 4 target-scans, covered in 2: recall 1/4 and 2/4 reach MOTA 1 - 2/4;
+  // 3/4 and 1 are unreached. AMOTA = (0.5 + 0.5 + 0 + 0) / 4.
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
+  r.track(1, 7, 1000.0, 1.0);
+  r.track(2, 7, 1000.0, 1.0);
+  CHECK(amota(r, 4) == doctest::Approx(0.25));
+}
+
+TEST_CASE("AMOTA: more false tracks than targets makes it negative") {
+  // 2 target-scans, 2 TP and 4 FP at the only threshold: MOTA = 1 - 4/2 = -1.
+  Run r(2);
+  for (std::uint32_t k = 1; k <= 2; ++k) {
+    r.target(k, 1, 1000.0);
+    r.track(k, 7, 1000.0, 1.0);
+    r.track(k, 8, 3000.0, 1.0);
+    r.track(k, 9, 4000.0, 1.0);
+  }
+  CHECK(amota(r, 2) == doctest::Approx(-1.0));
+}
+
+TEST_CASE("MOT counts: a target handed from one track id to another is one identity switch") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
+  r.track(1, 7, 1000.0, 1.0);
+  r.track(2, 7, 1000.0, 1.0);
+  r.track(3, 8, 1000.0, 1.0);
+  r.track(4, 8, 1000.0, 1.0);
+  const MotCounts c = counts(r, 0.0);
+  CHECK(c.ids == 1);
+  CHECK(c.mota() == doctest::Approx(0.75));
+}
+
+TEST_CASE("AMOTA: the threshold of recall r keeps the ceil(r num_gt) most confident true positives") {
+  // Target seen 4 scans; track 7 (existence 0.9) covers scans 1-2, track 8
+  // (existence 0.4) scans 3-4. TP scores {0.9, 0.9, 0.4, 0.4}, L = 4:
+  //   r = 1/4, 2/4: threshold 0.9 -> TP 2, FN 2, IDS 0: MOTA 1 - 2/4 = 0.5
+  //   r = 3/4, 1:   threshold 0.4 -> TP 4, FN 0, IDS 1: MOTA 1 - 1/4 = 0.75
+  // AMOTA = (0.5 + 0.5 + 0.75 + 0.75) / 4 = 0.625.
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
+  r.track(1, 7, 1000.0, 0.9);
+  r.track(2, 7, 1000.0, 0.9);
+  r.track(3, 8, 1000.0, 0.4);
+  r.track(4, 8, 1000.0, 0.4);
+  CHECK(counts(r, 0.9).mota() == doctest::Approx(0.5));
+  CHECK(counts(r, 0.4).mota() == doctest::Approx(0.75));
+  CHECK(amota(r, 4) == doctest::Approx(0.625));
+}
+
+TEST_CASE("AMOTA: tentative tracks are not scored") {
+  Run r(2);
+  for (std::uint32_t k = 1; k <= 2; ++k) {
+    r.target(k, 1, 1000.0);
+    r.track(k, 7, 1000.0, 1.0, false);
+  }
+  CHECK(counts(r, 0.0).tp == 0);
+  CHECK(amota(r, 40) == doctest::Approx(0.0));
+}
+
+TEST_CASE("AMOTA: a run without targets scores 0") {
+  Run r(2);
+  r.track(1, 7, 1000.0, 1.0);
+  CHECK(amota(r, 40) == doctest::Approx(0.0));
+}
