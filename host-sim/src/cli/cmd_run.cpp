@@ -47,6 +47,12 @@ void fill_common(const RunOptions& o, TrackerRunOptions& t) {
 }
 
 int run_adc_scenario(const RunOptions& o) {
+  if (o.run.write_detections) {
+    // Replay configures a tracker from a measurement-level sensor, not from a
+    // raw-ADC scenario's front end: refuse rather than write a file nothing reads.
+    throw std::runtime_error("--write-detections applies to measurement-level scenarios only; the front-end "
+                             "detections of a raw-ADC run are in DIR/measurements.csv");
+  }
   AdcRunConfig cfg;
   fill_common(o, cfg);
   cfg.frames = o.frames;

@@ -296,9 +296,10 @@ void print_adc_summary(const AdcSummary& a, const std::string& out_dir) {
   }
   std::printf("scenario %s (raw ADC: %s): %u run(s) x %u frames, seed %llu, rate %s\n",
               s.scenario.c_str(), pipeline_description(s.tracker).c_str(), s.runs, s.scans, static_cast<unsigned long long>(s.seed), rate);
-  std::printf("  mean OSPA %.2f m (c = 10 m, p = 2)   confirmed tracks per frame %.2f (truths %.2f)   "
+  std::printf("  mean OSPA %.2f m (c = %g m, p = %g)   confirmed tracks per frame %.2f (truths %.2f)   "
               "distinct confirmed tracks per run %.1f\n",
-              s.mean_ospa, s.mean_confirmed_tracks, s.mean_truths, s.tracks_found_per_run);
+              s.mean_ospa, a.ospa_cutoff_m, a.ospa_order, s.mean_confirmed_tracks, s.mean_truths,
+              s.tracks_found_per_run);
   std::printf("  OSPA by phase:");
   for (const auto& [name, v] : a.ospa_by_phase) std::printf(" %s %.2f", name.c_str(), v);
   std::printf("\n  track start delay [frames]:");
