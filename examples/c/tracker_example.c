@@ -10,7 +10,7 @@
 
 enum { kScans = 30, kClutter = 5, kMaxLine = 160 };
 
-static mptrack_mfbp_storage g_tracker_memory; /* .bss: ~291 KiB on a Cortex-M7 */
+static mptrack_mfbp_storage g_tracker_memory; /* .bss: ~328 KiB on a Cortex-M7 */
 
 /* --- tiny formatting, so the example needs no printf on a board --- */
 typedef struct line_buf {

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "mptrack/math/detmath.h"
 
@@ -39,7 +40,56 @@ struct Frame {  // maps data to a pixel box
   double px, py, pw, ph;        // pixel box
   double sx(double x) const { return px + (x - x0) / (x1 - x0) * pw; }
   double sy(double y) const { return py + ph - (y - y0) / (y1 - y0) * ph; }
+  double unit_m = 1.0;          // metres per data unit (x/y panel: 1 or 1000)
+  double mx(double x_m) const { return sx(x_m / unit_m); }
+  double my(double y_m) const { return sy(y_m / unit_m); }
 };
+
+/// Round tick values (1, 2 or 5 x 10^k apart, about `target` of them) in [lo, hi].
+std::vector<double> nice_ticks(double lo, double hi, int target) {
+  std::vector<double> out;
+  if (!(hi > lo) || target < 1) return out;
+  const double raw = (hi - lo) / target;
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  const double r = raw / mag;
+  const double step = (r < 1.5 ? 1.0 : r < 3.5 ? 2.0 : r < 7.5 ? 5.0 : 10.0) * mag;
+  for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) {
+    out.push_back(std::fabs(v) < 1e-12 * step ? 0.0 : v);
+  }
+  return out;
+}
+
+/// A tick label with as few digits as the step needs.
+std::string tick_text(double v, double step) {
+  char b[32];
+  const int digits = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+/// Tick marks and labels on the bottom and left edges of f's pixel box.
+void draw_ticks(std::ostream& out, const Frame& f, bool x_axis, bool y_axis) {
+  if (x_axis) {
+    const std::vector<double> t = nice_ticks(f.x0, f.x1, 6);
+    const double step = t.size() > 1 ? t[1] - t[0] : 1.0;
+    for (double v : t) {
+      const std::string x = f1(f.sx(v));
+      out << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\"" << f1(f.py + f.ph) << "\" y2=\""
+          << f1(f.py + f.ph + 5) << "\" stroke=\"#888\"/>\n<text x=\"" << x << "\" y=\"" << f1(f.py + f.ph + 17)
+          << "\" text-anchor=\"middle\">" << tick_text(v, step) << "</text>\n";
+    }
+  }
+  if (y_axis) {
+    const std::vector<double> t = nice_ticks(f.y0, f.y1, 6);
+    const double step = t.size() > 1 ? t[1] - t[0] : 1.0;
+    for (double v : t) {
+      const std::string y = f1(f.sy(v));
+      out << "<line x1=\"" << f1(f.px - 5) << "\" x2=\"" << f1(f.px) << "\" y1=\"" << y << "\" y2=\"" << y
+          << "\" stroke=\"#888\"/>\n<text x=\"" << f1(f.px - 7) << "\" y=\"" << f1(f.sy(v) + 4)
+          << "\" text-anchor=\"end\">" << tick_text(v, step) << "</text>\n";
+    }
+  }
+}
 
 void polar_to_xy(double r, double az, double& x, double& y) {
   double s = 0.0, c = 0.0;
@@ -62,12 +112,12 @@ std::string ellipse_path(const Frame& f, double mr, double ma, double crr, doubl
     const double a = ma + 2.0 * (l21 * c + l22 * s);
     double x = 0.0, y = 0.0;
     polar_to_xy(r, a, x, y);
-    d << (i == 0 ? "M" : "L") << f1(f.sx(x / 1000.0)) << ',' << f1(f.sy(y / 1000.0));
+    d << (i == 0 ? "M" : "L") << f1(f.mx(x)) << ',' << f1(f.my(y));
   }
   return d.str();
 }
 
-// 2-sigma contour of a Cartesian Gaussian [m], drawn in km.
+// 2-sigma contour of a Cartesian Gaussian [m], drawn in the panel's unit.
 std::string xy_ellipse_path(const Frame& f, double mx, double my, double cxx, double cxy, double cyy) {
   const double l11 = std::sqrt(std::max(cxx, 0.0));
   const double l21 = l11 > 0.0 ? cxy / l11 : 0.0;
@@ -79,7 +129,7 @@ std::string xy_ellipse_path(const Frame& f, double mx, double my, double cxx, do
     dmath::dsincos(2.0 * scenario::kPi * i / kPoints, s, c);
     const double x = mx + 2.0 * l11 * c;
     const double y = my + 2.0 * (l21 * c + l22 * s);
-    d << (i == 0 ? "M" : "L") << f1(f.sx(x / 1000.0)) << ',' << f1(f.sy(y / 1000.0));
+    d << (i == 0 ? "M" : "L") << f1(f.mx(x)) << ',' << f1(f.my(y));
   }
   return d.str();
 }
@@ -98,7 +148,7 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"20\" y=\"24\" font-size=\"15\">" << escape(title) << "</text>\n";
 
-  // ---- left panel: x/y in km, square aspect over the region's bounding box ----
+  // ---- left panel: x/y in km (m below a 2 km region), square aspect over the region's bounding box ----
   const scenario::Region& reg = spec.region;
   const double a0 = scenario::deg_to_rad(reg.azimuth_min_deg);
   const double a1 = scenario::deg_to_rad(reg.azimuth_max_deg);
@@ -107,20 +157,29 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
   const bool cartesian = spec.space == scenario::MeasurementSpace::kCartesian;
   if (cartesian) {  // seed 001: the x/y box
     const scenario::CartesianRegion& q = spec.xy_region;
-    outline = {{q.x_min_m / 1000.0, q.y_min_m / 1000.0},
-               {q.x_max_m / 1000.0, q.y_min_m / 1000.0},
-               {q.x_max_m / 1000.0, q.y_max_m / 1000.0},
-               {q.x_min_m / 1000.0, q.y_max_m / 1000.0}};
+    outline = {{q.x_min_m, q.y_min_m},
+               {q.x_max_m, q.y_min_m},
+               {q.x_max_m, q.y_max_m},
+               {q.x_min_m, q.y_max_m}};
   }
   for (int i = 0; i <= 40 && !cartesian; ++i) {
     double x = 0.0, y = 0.0;
     polar_to_xy(reg.range_max_m, a0 + (a1 - a0) * i / 40.0, x, y);
-    outline.emplace_back(x / 1000.0, y / 1000.0);
+    outline.emplace_back(x, y);
   }
   for (int i = 40; i >= 0 && !cartesian; --i) {
     double x = 0.0, y = 0.0;
     polar_to_xy(reg.range_min_m, a0 + (a1 - a0) * i / 40.0, x, y);
-    outline.emplace_back(x / 1000.0, y / 1000.0);
+    outline.emplace_back(x, y);
+  }
+  // Outline in metres so far; the panel's unit follows the region's size.
+  double ext = 0.0;
+  for (const auto& p : outline) ext = std::max({ext, std::fabs(p.first), std::fabs(p.second)});
+  const double unit_m = ext >= 2000.0 ? 1000.0 : 1.0;
+  const char* unit = unit_m > 1.0 ? "km" : "m";
+  for (auto& p : outline) {
+    p.first /= unit_m;
+    p.second /= unit_m;
   }
   for (const auto& p : outline) {
     xmin = std::min(xmin, p.first);
@@ -130,16 +189,17 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
   }
   const double span = std::max(xmax - xmin, ymax - ymin) * 1.04;
   const double cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax);
-  const Frame xy{cx - span / 2, cx + span / 2, cy - span / 2, cy + span / 2, 60, 50, 470, 470};
+  const Frame xy{cx - span / 2, cx + span / 2, cy - span / 2, cy + span / 2, 60, 50, 470, 470, unit_m};
   out << "<rect x=\"60\" y=\"50\" width=\"470\" height=\"470\" fill=\"none\" stroke=\"#888\"/>\n";
   out << "<path fill=\"#f4f4f4\" stroke=\"#aaa\" d=\"";
   for (std::size_t i = 0; i < outline.size(); ++i) {
     out << (i == 0 ? "M" : "L") << f1(xy.sx(outline[i].first)) << ',' << f1(xy.sy(outline[i].second));
   }
   out << "Z\"/>\n";
-  out << "<text x=\"295\" y=\"545\" text-anchor=\"middle\">x [km] (" << f1(xy.x0) << " .. " << f1(xy.x1)
-      << ")</text>\n<text x=\"20\" y=\"285\" transform=\"rotate(-90 20 285)\" text-anchor=\"middle\">y [km] ("
-      << f1(xy.y0) << " .. " << f1(xy.y1) << ")</text>\n";
+  draw_ticks(out, xy, true, true);
+  out << "<text x=\"295\" y=\"552\" text-anchor=\"middle\">x [" << unit << "]</text>\n"
+      << "<text x=\"14\" y=\"285\" transform=\"rotate(-90 14 285)\" text-anchor=\"middle\">y [" << unit
+      << "]</text>\n";
 
   // True clutter components at mid-life (dashed grey).
   for (const scenario::ClutterSpec& c : spec.clutter) {
@@ -168,7 +228,7 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
   for (const scenario::SimScan& s : scans) {
     for (const auto& t : s.truth) {
       std::string& d = truth_paths[t.target_id];
-      d += (d.empty() ? "M" : "L") + f1(xy.sx(t.x.px / 1000.0)) + "," + f1(xy.sy(t.x.py / 1000.0));
+      d += (d.empty() ? "M" : "L") + f1(xy.mx(t.x.px)) + "," + f1(xy.my(t.x.py));
     }
   }
   for (const auto& [id, d] : truth_paths) {
@@ -178,8 +238,8 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
   for (const EstimateOut& e : estimates) {
     for (const TrackOut& t : e.tracks) {
       if (!t.confirmed) continue;
-      out << "<circle r=\"1.4\" fill=\"" << kPalette[t.id % 10] << "\" cx=\"" << f1(xy.sx(t.px / 1000.0))
-          << "\" cy=\"" << f1(xy.sy(t.py / 1000.0)) << "\"/>\n";
+      out << "<circle r=\"1.4\" fill=\"" << kPalette[t.id % 10] << "\" cx=\"" << f1(xy.mx(t.px))
+          << "\" cy=\"" << f1(xy.my(t.py)) << "\"/>\n";
     }
   }
   // Two short lines: one line of 90 characters ran past the panel.
@@ -199,12 +259,8 @@ void write_plot_svg(const std::string& path, const scenario::ScenarioSpec& spec,
     out << (i == 0 ? "M" : "L") << f1(os.sx(static_cast<double>(i + 1))) << ',' << f1(os.sy(ospa_per_scan[i]));
   }
   out << "\"/>\n";
-  for (int i = 0; i <= 4; ++i) {
-    const double v = omax * 1.05 * i / 4.0;
-    out << "<text x=\"635\" y=\"" << f1(os.sy(v) + 4) << "\" text-anchor=\"end\">" << f1(v) << "</text>\n";
-  }
-  out << "<text x=\"900\" y=\"545\" text-anchor=\"middle\">scan (1 .. " << ospa_per_scan.size()
-      << "); shaded: evaluation interval</text>\n"
+  draw_ticks(out, os, true, true);
+  out << "<text x=\"900\" y=\"552\" text-anchor=\"middle\">scan; shaded: evaluation interval</text>\n"
       << "<text x=\"650\" y=\"68\">OSPA [m] (p = " << order_p << ", c = " << cutoff_m
       << " m, the run's metric), mean over runs</text>\n</svg>\n";
   if (!out) throw std::runtime_error(path + ": write failed");
@@ -237,10 +293,7 @@ void write_ospa_comparison_svg(const std::string& path, const std::string& title
         << "\" stroke=\"#ddd\"/>\n<text x=\"64\" y=\"" << f1(os.sy(v) + 4) << "\" text-anchor=\"end\">" << f1(v)
         << "</text>\n";
   }
-  for (int i = 0; i <= 5; ++i) {
-    const double k = 1.0 + (os.x1 - 1.0) * i / 5.0;
-    out << "<text x=\"" << f1(os.sx(k)) << "\" y=\"516\" text-anchor=\"middle\">" << f1(k) << "</text>\n";
-  }
+  draw_ticks(out, os, true, false);
   for (std::size_t t = 0; t < series.size(); ++t) {
     const char* colour = kPalette[t % 10];
     const char* dash = t >= 10 ? " stroke-dasharray=\"6,3\"" : "";

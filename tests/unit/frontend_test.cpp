@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <string>
 
 #include "alloc_guard.h"
 #include "frontend_test_signals.h"
@@ -338,5 +339,37 @@ TEST_CASE("frontend: max_abs_sample and saturation_fraction are validated") {
   p.saturation_fraction = std::numeric_limits<double>::quiet_NaN();
   CHECK(rig->fe.init(p) == Status::kInvalidArgument);
   p.saturation_fraction = 0.0;
+  CHECK(rig->fe.init(p) == Status::kOk);
+}
+
+TEST_CASE("frontend: a 12-bit ADC's positive rail (32752 = 2047 x 16, left-justified) counts as full scale") {
+  auto rig = std::make_unique<Int16Rig<Small>>();
+  fe::FrontEndParams p = mptrack::test::small_doppler_params();
+  p.saturation_fraction = 0.01;
+  p.adc_bits = 12;
+  REQUIRE(rig->fe.init(p) == Status::kOk);
+  fill_target<Small>(p, rig->cube);
+  const std::size_t n = rig->cube.iq.size();
+  // 10 % of the values at the positive rail only: 32767 is not a 12-bit code.
+  for (std::size_t i = 0; i < n; i += 10u) rig->cube.iq[i] = 32752;
+  CHECK(rig->fe.process(rig->cube, rig->scan) == Status::kPartial);
+  CHECK(rig->fe.counters().frames_saturated == 1);
+  // One LSB (16 codes) below the rail is not full scale.
+  for (std::size_t i = 0; i < n; i += 10u) rig->cube.iq[i] = 32736;
+  const Status below = rig->fe.process(rig->cube, rig->scan);
+  CHECK((below == Status::kOk || below == Status::kCapacityExceeded));
+  CHECK(rig->fe.counters().frames_saturated == 1);
+}
+
+TEST_CASE("frontend: adc_bits is validated (2..16)") {
+  auto rig = std::make_unique<Rig<Small>>();
+  fe::FrontEndParams p = mptrack::test::small_doppler_params();
+  mptrack::ParamError where;
+  p.adc_bits = 1;
+  CHECK(fe::FrontEnd<Small>::validate(p, &where) == Status::kInvalidArgument);
+  CHECK(std::string(where.field) == "adc_bits");
+  p.adc_bits = 17;
+  CHECK(rig->fe.init(p) == Status::kInvalidArgument);
+  p.adc_bits = 2;
   CHECK(rig->fe.init(p) == Status::kOk);
 }

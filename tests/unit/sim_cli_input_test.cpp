@@ -154,6 +154,12 @@ TEST_CASE("cli: --rate and --frames on a measurement-level scenario are refused"
   expect_refused("--scenario seed000-s2 --scans 3 --frames 10", {"--frames", "raw-ADC"});
 }
 
+TEST_CASE("cli: raw-ADC-only flags on measurement-level scenarios and the reverse are refused") {
+  expect_refused("--scenario seed000-s2 --scans 3 --adc-format int16", {"--adc-format", "raw-ADC"});
+  expect_refused("--scenario seed000-s2 --scans 3 --saturation-policy drop", {"--saturation-policy", "raw-ADC"});
+  expect_refused("--scenario seed004-drones --frames 3 --write-detections", {"--write-detections", "measurement-level"});
+}
+
 TEST_CASE("cli: scenario values out of range name the field and the bounds") {
   const fs::path d = scratch();
   expect_refused("--scenario-file " + scenario_file(d, "p1", [](nlohmann::json& s) { s["scan_period_s"] = 1e-320; }).string(),

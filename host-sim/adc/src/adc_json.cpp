@@ -85,7 +85,7 @@ void each(const json& obj, const std::string& path, const char* key, F&& f) {
 
 AdcScenario adc_scenario_from_json(const json& doc) {
   check_object(doc, "", {"schema", "name", "description", "num_frames", "frame_period_s", "ospa_cutoff_m",
-                         "ospa_order", "radar", "frontend", "tracker_model", "drones", "clutter_patches",
+                         "ospa_order", "radar", "frontend", "tracker_model", "adc", "drones", "clutter_patches",
                          "chaff_clouds", "jammers", "phases"});
   if (text(need(doc, "", "schema"), "schema") != kAdcScenarioSchema) {
     fail("schema", std::string("expected \"") + kAdcScenarioSchema + "\"");
@@ -137,6 +137,16 @@ AdcScenario adc_scenario_from_json(const json& doc) {
     check_object(*t, "tracker_model", {"sigma_range_m", "sigma_bearing_deg"});
     opt_number(*t, "tracker_model", "sigma_range_m", s.tracker_model.sigma_range_m);
     opt_number(*t, "tracker_model", "sigma_bearing_deg", s.tracker_model.sigma_bearing_deg);
+  }
+  if (const json* a = find(doc, "adc")) {
+    const std::string p = "adc";
+    check_object(*a, p, {"sample_format", "bits", "full_scale_v", "saturation_fraction", "saturation_policy"});
+    AdcModelSpec& o = s.adc;
+    if (const json* v = find(*a, "sample_format")) o.sample_format = text(*v, "adc.sample_format");
+    opt_integer(*a, p, "bits", o.bits);
+    opt_number(*a, p, "full_scale_v", o.full_scale_v);
+    opt_number(*a, p, "saturation_fraction", o.saturation_fraction);
+    if (const json* v = find(*a, "saturation_policy")) o.saturation_policy = text(*v, "adc.saturation_policy");
   }
   need(doc, "", "drones");
   each(doc, "", "drones", [&](const json& v, const std::string& p) {
@@ -248,6 +258,11 @@ json adc_scenario_to_json(const AdcScenario& s) {
                    {"angle_window", f.angle_window}};
   j["tracker_model"] = {{"sigma_range_m", s.tracker_model.sigma_range_m},
                         {"sigma_bearing_deg", s.tracker_model.sigma_bearing_deg}};
+  j["adc"] = {{"sample_format", s.adc.sample_format},
+              {"bits", s.adc.bits},
+              {"full_scale_v", s.adc.full_scale_v},
+              {"saturation_fraction", s.adc.saturation_fraction},
+              {"saturation_policy", s.adc.saturation_policy}};
   j["drones"] = json::array();
   for (const DroneSpec& d : s.drones) {
     json legs = json::array();

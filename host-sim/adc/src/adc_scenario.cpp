@@ -58,6 +58,16 @@ std::string validate(const AdcScenario& s) {
   if (f.cfar_training_cells < 1 || f.cfar_training_cells > 64) return "frontend.cfar_training_cells: expected 1..64";
   if (!pos(s.tracker_model.sigma_range_m)) return "tracker_model.sigma_range_m: expected a positive number";
   if (!pos(s.tracker_model.sigma_bearing_deg)) return "tracker_model.sigma_bearing_deg: expected a positive number";
+  const AdcModelSpec& a = s.adc;
+  if (a.sample_format != "float" && a.sample_format != "int16")
+    return "adc.sample_format: expected \"float\" or \"int16\"";
+  if (a.bits < 2 || a.bits > 16) return "adc.bits = " + std::to_string(a.bits) + ": expected 2..16";
+  if (!(pos(a.full_scale_v) && a.full_scale_v <= 1e3))
+    return "adc.full_scale_v: expected a number in (0, 1000] V";
+  if (!(nonneg(a.saturation_fraction) && a.saturation_fraction <= 1.0))
+    return "adc.saturation_fraction: expected a number in [0, 1]";
+  if (a.saturation_policy != "keep" && a.saturation_policy != "drop")
+    return "adc.saturation_policy: expected \"keep\" or \"drop\"";
   std::set<std::uint32_t> ids;
   for (std::size_t i = 0; i < s.drones.size(); ++i) {
     const DroneSpec& d = s.drones[i];
@@ -143,6 +153,10 @@ bool operator==(const AdcScenario& a, const AdcScenario& b) {
     return false;
   if (a.tracker_model.sigma_range_m != b.tracker_model.sigma_range_m ||
       a.tracker_model.sigma_bearing_deg != b.tracker_model.sigma_bearing_deg)
+    return false;
+  if (a.adc.sample_format != b.adc.sample_format || a.adc.bits != b.adc.bits ||
+      a.adc.full_scale_v != b.adc.full_scale_v || a.adc.saturation_fraction != b.adc.saturation_fraction ||
+      a.adc.saturation_policy != b.adc.saturation_policy)
     return false;
   if (a.drones.size() != b.drones.size() || a.clutter_patches.size() != b.clutter_patches.size() ||
       a.chaff_clouds.size() != b.chaff_clouds.size() || a.jammers.size() != b.jammers.size() ||

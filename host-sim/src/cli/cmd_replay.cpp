@@ -1,5 +1,6 @@
 // `mptrack-sim replay --detections FILE [--scenario NAME | --scenario-file F] --tracker T`:
-// recorded detections (replay/detections_csv.h) through one tracker, writing
+// recorded detections (replay/detections_csv.h, or detections_json.h for a
+// .json file) through one tracker, writing
 // the output directory of a normal run (tracks.csv, summary.json, plot).
 // The scenario gives the sensor the tracker is set up with (region, noise,
 // threshold, scan period, clutter rates); its targets are not truth here.
@@ -7,7 +8,7 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "replay/detections_csv.h"
+#include "replay/detections_json.h"
 #include "replay/replay_source.h"
 #include "run/staged_output.h"
 #include "runner.h"
@@ -27,7 +28,7 @@ int run_replay(const std::string& detections, const RunOptions& o) {
   scenario::ScenarioSpec sensor =
       o.scenario_file.empty() ? resolve_scenario(o.scenario_name) : load_scenario_file(o.scenario_file);
   truncate_scans(sensor, o.scans);
-  ReplaySource source(sensor, read_detections_csv(detections));
+  ReplaySource source(sensor, read_detections_file(detections));
   cfg.clutter_scale = o.clutter_scale;
   if (cfg.out_dir.empty()) cfg.out_dir = "out/replay-" + cfg.tracker;
   const std::string out_dir = cfg.out_dir;
@@ -54,11 +55,12 @@ Subcommand add_replay_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "replay",
       "run one tracker on recorded detections (CSV: time_s,range_m,azimuth_rad|azimuth_deg,amplitude"
-      "[,doppler_mps], header required; host-sim/README.md \"Replaying recorded detections\").\n"
+      "[,doppler_mps], header required; or a .json file, schema mptrack-detections/1;\n"
+      "host-sim/README.md \"Replaying recorded detections\").\n"
       "The sensor set-up comes from --scenario/--scenario-file (default seed000-s2); writes tracks.csv,\n"
       "summary.json and plot.svg like a run. `mptrack-sim --write-detections` exports a run's detections.\n"
       "Example: mptrack-sim replay --detections rec.csv --scenario seed000-s2 --tracker mfbp --out out/rec");
-  cmd->add_option("--detections", *detections, "detections CSV file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--detections", *detections, "detections file: CSV, or JSON if the name ends in .json")->required()->check(CLI::ExistingFile);
   return Subcommand{cmd, [detections](const RunOptions& o) { return run_replay(*detections, o); }};
 }
 

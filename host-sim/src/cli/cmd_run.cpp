@@ -47,10 +47,18 @@ void fill_common(const RunOptions& o, TrackerRunOptions& t) {
 }
 
 int run_adc_scenario(const RunOptions& o) {
+  if (o.run.write_detections) {
+    // Replay configures a tracker from a measurement-level sensor, not from a
+    // raw-ADC scenario's front end: refuse rather than write a file nothing reads.
+    throw std::runtime_error("--write-detections applies to measurement-level scenarios only; the front-end "
+                             "detections of a raw-ADC run are in DIR/measurements.csv");
+  }
   AdcRunConfig cfg;
   fill_common(o, cfg);
   cfg.frames = o.frames;
   cfg.rate_hz = o.rate_hz;
+  cfg.adc_format = o.adc_format;
+  cfg.saturation_policy = o.saturation_policy;
   return run_adc_command(o.scenario_file.empty() ? o.scenario_name : "", o.scenario_file, cfg);
 }
 
@@ -80,6 +88,12 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--rate", o.rate_hz, "raw-ADC scenarios: producer frame rate [Hz], frames dropped on overrun "
                  "(0 = lossless, as fast as the consumer)")
       ->capture_default_str()->check(number_in(0.0, 1e6));
+  app.add_option("--adc-format", o.adc_format, "raw-ADC scenarios: float (volts, no ADC) or int16 (the scenario's "
+                 "ADC model quantises each frame; the ring carries int16 codes); default: the scenario's adc.sample_format")
+      ->check(CLI::IsMember({"float", "int16"}));
+  app.add_option("--saturation-policy", o.saturation_policy, "raw-ADC int16 path: keep (a saturated frame's "
+                 "detections are used, counted) or drop (the frame reaches no tracker, counted); default: the scenario's")
+      ->check(CLI::IsMember({"keep", "drop"}));
   app.add_option("--csv-runs", o.run.csv_runs, "write CSV rows for the first N runs only (-1 = all)")->capture_default_str();
   app.add_option("--mfbp-param", o.run.mfbp_params, kMfbpParamHelp);
   app.add_flag("--no-plot", o.no_plot, "do not write plot.svg");
@@ -92,6 +106,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 int run_default_command(const RunOptions& o) {
   if (is_adc_scenario(o.scenario_name, o.scenario_file)) return run_adc_scenario(o);
   check_raw_adc_only_flags(o.scenario_file.empty() ? o.scenario_name : o.scenario_file, o.rate_hz, o.frames);
+  check_raw_adc_only_adc_flags(o.scenario_file.empty() ? o.scenario_name : o.scenario_file, o.adc_format,
+                               o.saturation_policy);
   RunConfig cfg;
   fill_common(o, cfg);
   cfg.spec = o.scenario_file.empty() ? resolve_scenario(o.scenario_name) : load_scenario_file(o.scenario_file);

@@ -32,6 +32,8 @@ struct RunOptions {
   std::uint32_t scans = 0;
   std::uint32_t frames = 0;
   double rate_hz = 0.0;
+  std::string adc_format;          ///< --adc-format (raw-ADC scenarios; "" = the scenario's)
+  std::string saturation_policy;   ///< --saturation-policy (raw-ADC scenarios; "" = the scenario's)
   bool no_plot = false;
   bool no_progress = false;
   bool force = false;                 ///< --force: write even above the output-size limit (input_checks.h)

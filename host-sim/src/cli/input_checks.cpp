@@ -54,6 +54,14 @@ void check_raw_adc_only_flags(const std::string& scenario, double rate_hz, std::
                            scenario + " is measurement-level (use --scans to shorten it)");
 }
 
+void check_raw_adc_only_adc_flags(const std::string& scenario, const std::string& adc_format,
+                                  const std::string& saturation_policy) {
+  const char* flag = !adc_format.empty() ? "--adc-format" : !saturation_policy.empty() ? "--saturation-policy" : nullptr;
+  if (flag == nullptr) return;
+  throw std::runtime_error(std::string(flag) + " applies to raw-ADC scenarios only (seed004-drones, mimo-interference); " +
+                           scenario + " is measurement-level (its scenario has no ADC)");
+}
+
 void check_bounded_work(const scenario::ScenarioSpec& spec, double clutter_scale) {
   const double n = scenario::expected_measurements_per_scan(spec, clutter_scale);
   if (n <= kMaxExpectedMeasurementsPerScan) return;

@@ -23,6 +23,9 @@ CLI::Validator number_in(double lo, double hi, bool lo_open = false);
 /// Refuses `--rate` / `--frames` given to a measurement-level scenario
 /// (they apply to raw-ADC frames only); throws std::runtime_error.
 void check_raw_adc_only_flags(const std::string& scenario, double rate_hz, std::uint32_t frames);
+/// The same for --adc-format and --saturation-policy (non-empty = given).
+void check_raw_adc_only_adc_flags(const std::string& scenario, const std::string& adc_format,
+                                  const std::string& saturation_policy);
 
 /// Measurement limit per scan: far above every caps preset (LargeCaps 1024
 /// detections per scan), so only a scenario that would swamp any tracker

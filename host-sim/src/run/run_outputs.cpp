@@ -2,6 +2,7 @@
 #include "run/run_outputs.h"
 
 #include "replay/detections_csv.h"
+#include "replay/detections_json.h"
 #include "svg_plot.h"
 
 namespace mptrack::sim {
@@ -45,6 +46,7 @@ void RunOutputs::write_plot(const std::vector<double>& ospa_per_scan, const std:
 void RunOutputs::write_detections() const {
   if (options_.out_dir.empty() || !options_.write_detections) return;
   write_detections_csv(options_.out_dir + "/detections.csv", first_.scans);
+  write_detections_json(options_.out_dir + "/detections.json", first_.scans);
 }
 
 }  // namespace mptrack::sim

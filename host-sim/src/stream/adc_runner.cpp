@@ -48,6 +48,10 @@ void finish_frontend(const FrontEndTotals& t, AdcSummary& out) {
   out.range_error_rms_m = t.matched > 0 ? std::sqrt(t.sum_range_err2 / static_cast<double>(t.matched)) : 0.0;
   out.bearing_error_rms_deg =
       t.matched > 0 ? std::sqrt(t.sum_bearing_err2 / static_cast<double>(t.matched)) * kRadToDeg : 0.0;
+  out.clipped_samples = t.clipped_samples;
+  out.frames_saturated = t.frames_saturated;
+  out.saturated_detections = t.saturated_detections;
+  out.saturated_frames_dropped = t.saturated_frames_dropped;
 }
 
 /// Raw-ADC statistics on top of the aggregator's, per tracker: OSPA by
@@ -61,7 +65,7 @@ class AdcRunObserver final : public RunObserver {
     fe_csv_.open(out_dir + "/frontend.csv");
     if (!fe_csv_) throw std::runtime_error(out_dir + "/frontend.csv: cannot write");
     fe_csv_ << "run,frame,processed,detections,drone_detections,over_cap,range_us,doppler_us,angle_us,cfar_us,"
-               "tracker_us,frame_us,queue_us\n";
+               "tracker_us,frame_us,queue_us,saturated\n";
   }
 
   void on_run(std::size_t tracker, const std::vector<scenario::SimScan>& scans, const RunRecord& rec,
@@ -123,6 +127,10 @@ class AdcRunObserver final : public RunObserver {
     sum.matched += t.matched;
     sum.sum_range_err2 += t.sum_range_err2;
     sum.sum_bearing_err2 += t.sum_bearing_err2;
+    sum.clipped_samples += t.clipped_samples;
+    sum.frames_saturated += t.frames_saturated;
+    sum.saturated_detections += t.saturated_detections;
+    sum.saturated_frames_dropped += t.saturated_frames_dropped;
   }
 
   struct PerTracker {
@@ -159,9 +167,11 @@ class AdcRunObserver final : public RunObserver {
     for (std::size_t k = 0; k < recs.size(); ++k) {
       const FrameRecord& r = recs[k];
       char line[320];
-      std::snprintf(line, sizeof line, "%u,%zu,%d,%u,%u,%u,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n", run, k + 1,
+      // saturated: 0, 1 (int16 frame saturated, detections kept) or 2 (saturated, dropped)
+      std::snprintf(line, sizeof line, "%u,%zu,%d,%u,%u,%u,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d\n", run, k + 1,
                     r.processed ? 1 : 0, r.detections, r.drone_detections, r.over_cap, r.range_us, r.doppler_us,
-                    r.angle_us, r.cfar_us, r.tracker_us, r.frame_us, r.queue_us);
+                    r.angle_us, r.cfar_us, r.tracker_us, r.frame_us, r.queue_us,
+                    r.dropped_saturated ? 2 : r.saturated ? 1 : 0);
       fe_csv_ << line;
     }
   }
@@ -179,6 +189,8 @@ std::vector<AdcSummary> run_adc_loop(const AdcRunConfig& cfg, const std::vector<
                                      bool run_outputs) {
   adc::AdcScenario sc = cfg.scenario;
   truncate_frames(sc, cfg.frames);
+  if (!cfg.adc_format.empty()) sc.adc.sample_format = cfg.adc_format;
+  if (!cfg.saturation_policy.empty()) sc.adc.saturation_policy = cfg.saturation_policy;
   const std::string err = adc::validate(sc);
   if (!err.empty()) throw std::runtime_error("scenario " + sc.name + ": " + err);
   if (!(cfg.rate_hz >= 0.0)) throw std::runtime_error("--rate must be >= 0");
@@ -211,6 +223,7 @@ std::vector<AdcSummary> run_adc_loop(const AdcRunConfig& cfg, const std::vector<
     out[t].ospa_cutoff_m = sc.ospa_cutoff_m;
     out[t].ospa_order = sc.ospa_order;
     out[t].phases = sc.phases;
+    out[t].adc = sc.adc;
     adc_stats.finish(t, out[t]);
   }
   if (outputs) {
@@ -250,6 +263,17 @@ nlohmann::ordered_json adc_summary_to_json(const AdcSummary& s) {
                    {"drone_detection_rate", s.drone_detection_rate},
                    {"range_error_rms_m", s.range_error_rms_m},
                    {"bearing_error_rms_deg", s.bearing_error_rms_deg}};
+  if (s.adc.sample_format == "int16") {  // the float path's summary is unchanged
+    j["adc"] = {{"sample_format", s.adc.sample_format},
+                {"bits", s.adc.bits},
+                {"full_scale_v", s.adc.full_scale_v},
+                {"saturation_fraction", s.adc.saturation_fraction},
+                {"saturation_policy", s.adc.saturation_policy},
+                {"clipped_samples", s.clipped_samples},
+                {"frames_saturated", s.frames_saturated},
+                {"saturated_frame_detections", s.saturated_detections},
+                {"saturated_frames_dropped", s.saturated_frames_dropped}};
+  }
   j["ospa"] = {{"cutoff_m", s.ospa_cutoff_m}, {"order_p", s.ospa_order}};
   nlohmann::ordered_json spans = nlohmann::ordered_json::array();
   for (const adc::EvalPhase& p : s.phases) spans.push_back({{"name", p.name}, {"frames", {p.first_frame, p.last_frame}}});
@@ -272,9 +296,10 @@ void print_adc_summary(const AdcSummary& a, const std::string& out_dir) {
   }
   std::printf("scenario %s (raw ADC: %s): %u run(s) x %u frames, seed %llu, rate %s\n",
               s.scenario.c_str(), pipeline_description(s.tracker).c_str(), s.runs, s.scans, static_cast<unsigned long long>(s.seed), rate);
-  std::printf("  mean OSPA %.2f m (c = 10 m, p = 2)   confirmed tracks per frame %.2f (truths %.2f)   "
+  std::printf("  mean OSPA %.2f m (c = %g m, p = %g)   confirmed tracks per frame %.2f (truths %.2f)   "
               "distinct confirmed tracks per run %.1f\n",
-              s.mean_ospa, s.mean_confirmed_tracks, s.mean_truths, s.tracks_found_per_run);
+              s.mean_ospa, a.ospa_cutoff_m, a.ospa_order, s.mean_confirmed_tracks, s.mean_truths,
+              s.tracks_found_per_run);
   std::printf("  OSPA by phase:");
   for (const auto& [name, v] : a.ospa_by_phase) std::printf(" %s %.2f", name.c_str(), v);
   std::printf("\n  track start delay [frames]:");
@@ -300,6 +325,14 @@ void print_adc_summary(const AdcSummary& a, const std::string& out_dir) {
   }
   row("tracker", a.stages.tracker);
   row("frame total", a.stages.frame);
+  if (a.adc.sample_format == "int16") {
+    std::printf("  adc: int16, %u bits, full scale %g V; %llu values clipped, %llu saturated frames "
+                "(%llu detections; policy %s, %llu dropped)\n",
+                a.adc.bits, a.adc.full_scale_v, static_cast<unsigned long long>(a.clipped_samples),
+                static_cast<unsigned long long>(a.frames_saturated),
+                static_cast<unsigned long long>(a.saturated_detections), a.adc.saturation_policy.c_str(),
+                static_cast<unsigned long long>(a.saturated_frames_dropped));
+  }
   std::printf("  ring: offered %llu, pushed %llu, processed %llu, dropped %llu\n",
               static_cast<unsigned long long>(a.ring.frames_offered),
               static_cast<unsigned long long>(a.ring.frames_pushed),

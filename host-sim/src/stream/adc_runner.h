@@ -27,6 +27,8 @@ struct AdcRunConfig : TrackerRunOptions {
   std::uint32_t frames = 0;        ///< keep only the first N frames (0 = all)
   double rate_hz = 0.0;            ///< producer frame rate [Hz]; 0 = lossless, as fast as consumed
   std::uint32_t consumer_delay_us = 0;  ///< extra sleep per consumed frame (tests: a slow consumer)
+  std::string adc_format;          ///< --adc-format: overrides scenario.adc.sample_format ("" = keep)
+  std::string saturation_policy;   ///< --saturation-policy: overrides scenario.adc.saturation_policy
 };
 
 /// Per-stage latency over all processed frames of all runs [us].
@@ -45,6 +47,11 @@ struct AdcSummary {
   double drone_detection_rate = 0.0;   ///< fraction of (alive drone, processed frame) with a detection within 3 m
   double range_error_rms_m = 0.0;      ///< of those detections
   double bearing_error_rms_deg = 0.0;
+  adc::AdcModelSpec adc;           ///< the scenario's ADC model
+  std::uint64_t clipped_samples = 0;           ///< int16 path, summed over runs: values the ADC clipped
+  std::uint64_t frames_saturated = 0;          ///< ... processed frames flagged saturated
+  std::uint64_t saturated_detections = 0;      ///< ... detections of those frames
+  std::uint64_t saturated_frames_dropped = 0;  ///< ... saturated frames handed to no tracker ("drop")
   std::map<std::string, double> ospa_by_phase;     ///< mean OSPA over runs x the phase's frames [m]
   std::map<std::uint32_t, double> start_delay;     ///< drone id -> mean frames from birth to a confirmed track within c
 };

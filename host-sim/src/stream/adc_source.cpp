@@ -9,8 +9,10 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 
+#include "mptrack/adc/adc_model.h"
 #include "mptrack/adc/frontend_config.h"
 #include "mptrack/adc/sbl_config.h"
 #include "mptrack/frontend/front_end.h"
@@ -134,47 +136,100 @@ void AdcScanSource::deliver(const ScanStep& step, FrameInput input) {
   }
   scans_ = truth_scans_;
   records_.assign(sc_.num_frames, FrameRecord{});
-  auto ring = std::make_unique<StreamRing>();  // fresh counters per delivery
+  clipped_.assign(sc_.num_frames, 0);
   StreamOptions opt;
   opt.rate_hz = rate_hz_;
-  const StreamCounters rc = run_stream(
-      *ring, sc_.num_frames, opt, [&](std::uint32_t k, StreamFrame& slot) { slot.cube = cubes_[k - 1]; },
-      [&](const StreamFrame& f, std::uint64_t queue_ns) { consume(f, queue_ns, step, input); });
+  StreamCounters rc;
+  if (int16()) {
+    // The producer is the ADC: it quantises the frame into the slot.
+    if (!volts_) volts_ = std::make_unique<adc::AdcCube>();
+    auto ring = std::make_unique<StreamRing16>();  // fresh counters per delivery
+    rc = run_stream<StreamFrame16>(
+        *ring, sc_.num_frames, opt,
+        [&](std::uint32_t k, StreamFrame16& slot) { clipped_[k - 1] = adc::quantise(cubes_[k - 1], sc_.adc, slot.cube); },
+        [&](const StreamFrame16& f, std::uint64_t queue_ns) { consume(f, queue_ns, step, input); });
+  } else {
+    auto ring = std::make_unique<StreamRing>();  // fresh counters per delivery
+    rc = run_stream<StreamFrame>(
+        *ring, sc_.num_frames, opt, [&](std::uint32_t k, StreamFrame& slot) { slot.cube = cubes_[k - 1]; },
+        [&](const StreamFrame& f, std::uint64_t queue_ns) { consume(f, queue_ns, step, input); });
+  }
   totals_ = FrontEndTotals{};
   totals_.ring = rc;
   label_run();
 }
 
-void AdcScanSource::consume(const StreamFrame& f, std::uint64_t queue_ns, const ScanStep& step, FrameInput input) {
+template <class Frame>
+void AdcScanSource::consume(const Frame& f, std::uint64_t queue_ns, const ScanStep& step, FrameInput input) {
+  constexpr bool kInt16 = std::is_same_v<Frame, StreamFrame16>;
   const std::uint64_t t0 = stream_now_ns();
   FrameRecord& r = records_[f.frame - 1];
   r.processed = true;
   r.queue_us = static_cast<double>(queue_ns) * 1e-3;
   scenario::SimScan& s = scans_[f.frame - 1];
-  if (input != FrameInput::kRawFrame) detect(f, input, s, r);
+  // The float-only stages (SBL, VMP) read volts: the int16 codes scaled back.
+  const adc::AdcCube* volts = nullptr;
+  if constexpr (kInt16) {
+    if (input != FrameInput::kCfarDetections) {
+      adc::codes_to_volts(f.cube, sc_.adc, *volts_);
+      volts = volts_.get();
+      r.saturated = adc::frame_saturated(f.cube, sc_.adc);
+    }
+  } else {
+    volts = &f.cube;
+  }
+  if (input == FrameInput::kCfarDetections) {
+    const bool saturated = detect_cfar(f.cube, s, r);
+    if constexpr (kInt16) r.saturated = saturated;
+  } else if (input == FrameInput::kSblDetections) {
+    detect_sbl(*volts, s, r);
+  }
   const std::uint64_t t1 = stream_now_ns();
   r.detections = static_cast<std::uint32_t>(s.measurements.size());
-  r.tracker_us = step(s, input == FrameInput::kRawFrame ? &f.cube : nullptr);
+  // Saturation policy "drop": the frame reaches no tracker (as an overrun).
+  r.dropped_saturated = r.saturated && sc_.adc.saturation_policy == "drop";
+  if (r.dropped_saturated) {
+    s.measurements.clear();
+  } else {
+    r.tracker_us = step(s, input == FrameInput::kRawFrame ? volts : nullptr);
+  }
   stage_profile_.poll();
   r.frame_us = static_cast<double>(t1 - t0) * 1e-3 + r.tracker_us;
   if (consumer_delay_us_ > 0) std::this_thread::sleep_for(std::chrono::microseconds(consumer_delay_us_));
 }
 
-void AdcScanSource::detect(const StreamFrame& f, FrameInput input, scenario::SimScan& s, FrameRecord& r) {
+template <class Cube>
+bool AdcScanSource::detect_cfar(const Cube& cube, scenario::SimScan& s, FrameRecord& r) {
   frontend::FrontEndStageTimes times;
   times.clock = &ns_clock;
-  const bool sbl = input == FrameInput::kSblDetections;
-  // SBL stage times use the front end's slots: spectrum, -, map searches, refinement.
-  const Status fst = sbl ? fe_->sbl.process(f.cube, fe_->scan, &times) : fe_->fe.process(f.cube, fe_->scan, &times);
+  const std::uint64_t saturated_before = fe_->fe.counters().frames_saturated;
+  const Status fst = fe_->fe.process(cube, fe_->scan, &times);
   stage_profile_.poll();
+  take_detections(fst, times, fe_->fe.last_frame_dropped(), s, r);
+  return fe_->fe.counters().frames_saturated != saturated_before;
+}
+
+void AdcScanSource::detect_sbl(const adc::AdcCube& cube, scenario::SimScan& s, FrameRecord& r) {
+  frontend::FrontEndStageTimes times;
+  times.clock = &ns_clock;
+  // SBL stage times use the front end's slots: spectrum, -, map searches, refinement.
+  const Status fst = fe_->sbl.process(cube, fe_->scan, &times);
+  stage_profile_.poll();
+  take_detections(fst, times, fe_->sbl.last_frame_dropped(), s, r);
+}
+
+void AdcScanSource::take_detections(Status fst, const frontend::FrontEndStageTimes& times, std::size_t over_cap,
+                                    scenario::SimScan& s, FrameRecord& r) {
   r.range_us = times.ticks[0] * 1e-3;
   r.doppler_us = times.ticks[1] * 1e-3;
   r.angle_us = times.ticks[2] * 1e-3;
   r.cfar_us = times.ticks[3] * 1e-3;
-  r.over_cap = static_cast<std::uint32_t>(sbl ? fe_->sbl.last_frame_dropped() : fe_->fe.last_frame_dropped());
+  r.over_cap = static_cast<std::uint32_t>(over_cap);
   // kCapacityExceeded: the strongest detections were kept (the rest are
-  // counted in over_cap); the frame is still usable.
-  if (fst != Status::kOk && fst != Status::kCapacityExceeded) return;
+  // counted in over_cap); kPartial: a saturated int16 frame or a detection
+  // dropped for a non-finite amplitude (counted by the front end), the rest
+  // valid. Both frames are usable; the saturation policy is consume()'s.
+  if (fst != Status::kOk && fst != Status::kCapacityExceeded && fst != Status::kPartial) return;
   for (const Measurement<float>& m : fe_->scan.measurements) {
     scenario::SimMeasurement y;
     y.range_m = static_cast<double>(m.range_m);
@@ -192,6 +247,12 @@ void AdcScanSource::label_run() {
     FrameRecord& r = records_[k - 1];
     for (const auto& t : s.truth) r.drone_detections += t.measurement_index >= 0 ? 1u : 0u;
     if (r.processed) totals_.drone_frames += s.truth.size();
+    totals_.clipped_samples += clipped_[k - 1];
+    if (r.saturated) {
+      ++totals_.frames_saturated;
+      totals_.saturated_detections += r.detections;
+    }
+    if (r.dropped_saturated) ++totals_.saturated_frames_dropped;
   }
 }
 

@@ -13,8 +13,10 @@ std::uint64_t stream_now_ns() {
           .count());
 }
 
-StreamCounters run_stream(StreamRing& ring, std::uint32_t num_frames, const StreamOptions& opt,
-                          const FrameFill& fill, const FrameConsume& consume) {
+template <class Frame>
+StreamCounters run_stream(StreamRingT<Frame>& ring, std::uint32_t num_frames, const StreamOptions& opt,
+                          const typename NonDeduced<FrameFillT<Frame>>::type& fill,
+                          const typename NonDeduced<FrameConsumeT<Frame>>::type& consume) {
   std::atomic<bool> done{false};
   std::uint64_t offered = 0;
   std::uint64_t late = 0;
@@ -33,10 +35,10 @@ StreamCounters run_stream(StreamRing& ring, std::uint32_t num_frames, const Stre
         // Lossless: wait for a free slot before asking (begin_write on a
         // full ring would count a drop). Single producer: size() can only
         // shrink under us.
-        while (ring.size() >= StreamRing::kCapacity) std::this_thread::sleep_for(std::chrono::microseconds(20));
+        while (ring.size() >= StreamRingT<Frame>::kCapacity) std::this_thread::sleep_for(std::chrono::microseconds(20));
       }
       ++offered;
-      StreamFrame* slot = ring.begin_write();
+      Frame* slot = ring.begin_write();
       if (slot == nullptr) continue;  // overrun: counted by the ring
       slot->frame = k;
       fill(k, *slot);
@@ -46,7 +48,7 @@ StreamCounters run_stream(StreamRing& ring, std::uint32_t num_frames, const Stre
     done.store(true, std::memory_order_release);
   });
   for (;;) {
-    const StreamFrame* f = ring.begin_read();
+    const Frame* f = ring.begin_read();
     if (f != nullptr) {
       const std::uint64_t now = stream_now_ns();
       consume(*f, now > f->pushed_ns ? now - f->pushed_ns : 0);
@@ -66,5 +68,11 @@ StreamCounters run_stream(StreamRing& ring, std::uint32_t num_frames, const Stre
   c.producer_late = late;
   return c;
 }
+
+template StreamCounters run_stream<StreamFrame>(StreamRing&, std::uint32_t, const StreamOptions&,
+                                                const FrameFill&, const FrameConsume&);
+template StreamCounters run_stream<StreamFrame16>(StreamRing16&, std::uint32_t, const StreamOptions&,
+                                                  const FrameFillT<StreamFrame16>&,
+                                                  const FrameConsumeT<StreamFrame16>&);
 
 }  // namespace mptrack::sim

@@ -18,20 +18,29 @@
 #include <cstdint>
 #include <functional>
 
+#include "mptrack/adc/adc_model.h"
 #include "mptrack/adc/synthesizer.h"
 #include "mptrack/platform/spsc_ring.h"
 
 namespace mptrack::sim {
 
-/// One ring slot: a raw frame plus bookkeeping.
-struct StreamFrame {
+/// One ring slot: a raw frame plus bookkeeping. Cube is the float cube
+/// (volts, no ADC model) or the int16 cube of ADC codes (adc/adc_model.h),
+/// what a board's ring carries.
+template <class Cube>
+struct StreamFrameT {
   std::uint32_t frame = 0;       ///< 1-based frame number
   std::uint64_t pushed_ns = 0;   ///< steady-clock stamp at commit [ns]
-  adc::AdcCube cube;
+  Cube cube;
 };
+using StreamFrame = StreamFrameT<adc::AdcCube>;
+using StreamFrame16 = StreamFrameT<adc::AdcCube16>;
 
-inline constexpr std::size_t kStreamSlots = 8;  ///< 7 frames in flight (~130 KiB)
-using StreamRing = platform::SpscRing<StreamFrame, kStreamSlots>;
+inline constexpr std::size_t kStreamSlots = 8;  ///< 7 frames in flight (~130 KiB float, ~65 KiB int16)
+template <class Frame>
+using StreamRingT = platform::SpscRing<Frame, kStreamSlots>;
+using StreamRing = StreamRingT<StreamFrame>;
+using StreamRing16 = StreamRingT<StreamFrame16>;
 
 struct StreamOptions {
   double rate_hz = 0.0;          ///< frame rate [Hz]; 0 = lossless, as fast as consumed
@@ -46,14 +55,27 @@ struct StreamCounters {
 };
 
 /// Fills slot.cube (and nothing else) for frame number `frame`.
-using FrameFill = std::function<void(std::uint32_t frame, StreamFrame& slot)>;
+template <class Frame>
+using FrameFillT = std::function<void(std::uint32_t frame, Frame& slot)>;
 /// Processes one frame; queue_ns = time it waited in the ring [ns].
-using FrameConsume = std::function<void(const StreamFrame& frame, std::uint64_t queue_ns)>;
+template <class Frame>
+using FrameConsumeT = std::function<void(const Frame& frame, std::uint64_t queue_ns)>;
+using FrameFill = FrameFillT<StreamFrame>;
+using FrameConsume = FrameConsumeT<StreamFrame>;
+
+/// Keeps a parameter out of template argument deduction (std::type_identity, C++20).
+template <class T>
+struct NonDeduced {
+  using type = T;
+};
 
 /// Streams frames 1..num_frames from fill (producer thread) to consume
 /// (calling thread) through `ring` (which must be fresh: counters at 0).
-StreamCounters run_stream(StreamRing& ring, std::uint32_t num_frames, const StreamOptions& opt,
-                          const FrameFill& fill, const FrameConsume& consume);
+/// Instantiated for StreamFrame and StreamFrame16.
+template <class Frame>
+StreamCounters run_stream(StreamRingT<Frame>& ring, std::uint32_t num_frames, const StreamOptions& opt,
+                          const typename NonDeduced<FrameFillT<Frame>>::type& fill,
+                          const typename NonDeduced<FrameConsumeT<Frame>>::type& consume);
 
 /// Monotonic nanoseconds (steady_clock).
 std::uint64_t stream_now_ns();

@@ -122,6 +122,8 @@ class FrontEnd {
     // Flag when full-scale samples > fraction x total (integer compare, exact).
     saturated_limit_ = static_cast<std::size_t>(
         p.saturation_fraction * static_cast<double>(2 * RadarCubeT<Caps, float>::kNumComplex));
+    // Positive rail of a left-justified adc_bits ADC (32767 at 16 bits).
+    positive_rail_ = static_cast<std::int16_t>(32768 - (std::int32_t{1} << (16 - p.adc_bits)));
     initialized_ = true;
     return Status::kOk;
   }
@@ -215,7 +217,7 @@ class FrontEnd {
   /// Sample tallies of one frame (check_frame).
   struct FrameCheck {
     std::size_t zero = 0;          ///< sample values exactly 0
-    std::size_t full_scale = 0;    ///< int16: -32768 or 32767
+    std::size_t full_scale = 0;    ///< int16: at a rail (-32768, or >= positive_rail_)
     std::size_t over_ceiling = 0;  ///< float: |x| > max_abs_sample (NaN is left to rmf_)
   };
 
@@ -230,7 +232,7 @@ class FrontEnd {
     for (const Sample x : cube.iq) {
       f.zero += static_cast<std::size_t>(x == Sample(0));
       if constexpr (std::is_same_v<Sample, std::int16_t>) {
-        f.full_scale += static_cast<std::size_t>((x == std::int16_t{-32768}) | (x == std::int16_t{32767}));
+        f.full_scale += static_cast<std::size_t>((x == std::int16_t{-32768}) | (x >= positive_rail_));
       } else {
         f.over_ceiling += static_cast<std::size_t>((x > max_abs_sample_) | (x < -max_abs_sample_));
       }
@@ -381,6 +383,7 @@ class FrontEnd {
   float min_noise_ = 0.0f;
   float max_abs_sample_ = 1e6f;
   std::size_t saturated_limit_ = 0;
+  std::int16_t positive_rail_ = 32767;  ///< int16 code of positive full scale (init: adc_bits)
   bool initialized_ = false;
 };
 

@@ -104,6 +104,9 @@ struct FrontEndParams {
   double saturation_fraction = 0.01;   ///< int16 cubes: a frame with more than this fraction of
                                        ///< its sample values at full scale (-32768 or 32767) is
                                        ///< flagged saturated (processed, kPartial) [-], in [0, 1]
+  std::size_t adc_bits = 16;           ///< int16 cubes: ADC resolution [bits], 2..16. Codes are
+                                       ///< left-justified (code / 32768 = fraction of full scale),
+                                       ///< so the rails are -32768 and 32768 - 2^(16 - adc_bits)
 
   /// Every field on its own; the fit to the radar caps (chirp length,
   /// range gate, CFAR window, max_detections) is FrontEnd::validate()'s.
@@ -128,6 +131,7 @@ struct FrontEndParams {
     MPTRACK_CHECK_PARAM(where, "angle_refine_iterations", check_at_most(angle_refine_iterations, 64));
     MPTRACK_CHECK_PARAM(where, "max_abs_sample", check_range(max_abs_sample, 1e-6, 1e9));
     MPTRACK_CHECK_PARAM(where, "saturation_fraction", check_range(saturation_fraction, 0.0, 1.0));
+    MPTRACK_CHECK_PARAM(where, "adc_bits", check_range(adc_bits, 2, 16));
     return Status::kOk;
   }
 };

@@ -124,6 +124,24 @@ struct TrackerModelSpec {
   double sigma_bearing_deg = 1.6;          ///< bearing noise std of a detection [deg] (measured: 1.64)
 };
 
+/// The receiver's ADC (docs/algorithms/scenarios.md §ADC model). "float"
+/// hands the synthesised volts to the ring as they are (no ADC: the
+/// seed 004 set-up); "int16" quantises each of I and Q with a `bits`-bit
+/// mid-tread quantiser clipping at +-full_scale_v, codes left-justified in
+/// int16 (code / 32768 = fraction of full scale, frontend/radar_cube.h), and
+/// the ring carries those int16 frames as a board's DMA would.
+struct AdcModelSpec {
+  std::string sample_format = "float";     ///< "float" | "int16"
+  std::uint32_t bits = 12;                 ///< ADC resolution [bits], 2..16
+  double full_scale_v = 1e-4;              ///< clip level of I and of Q [V]; the default puts the
+                                           ///< thermal noise (std 2.5e-7 V per component, model A)
+                                           ///< at 5 LSB of a 12-bit ADC, echoes clip from ~1.4 m
+  double saturation_fraction = 0.01;       ///< a frame with more than this fraction of its sample
+                                           ///< values at a rail is saturated, in [0, 1]
+  std::string saturation_policy = "keep";  ///< "keep": a saturated frame's detections are used,
+                                           ///< counted; "drop": the frame reaches no tracker
+};
+
 /// A named frame interval reported separately in summary.json (where a
 /// tracker loses: start, crossing, births, low SNR).
 struct EvalPhase {
@@ -141,6 +159,7 @@ struct AdcScenario {
   RadarSpec radar;
   FrontEndSpec frontend;
   TrackerModelSpec tracker_model;
+  AdcModelSpec adc;
   std::vector<DroneSpec> drones;
   std::vector<ClutterPatchSpec> clutter_patches;
   std::vector<ChaffCloudSpec> chaff_clouds;

@@ -41,6 +41,9 @@ inline frontend::FrontEndParams frontend_params_for(const AdcScenario& s) {
   p.cfar.pfa = s.frontend.cfar_pfa;
   p.cfar.guard_cells = s.frontend.cfar_guard_cells;
   p.cfar.training_cells = s.frontend.cfar_training_cells;
+  // The int16 path's saturation test (float cubes never saturate).
+  p.adc_bits = s.adc.bits;
+  p.saturation_fraction = s.adc.saturation_fraction;
   return p;
 }
 
