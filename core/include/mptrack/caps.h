@@ -39,7 +39,7 @@ struct DefaultCaps {
   /// MF-BP reads these two instead of kMaxGatePairs (which the multipath
   /// tracker keeps per pseudo-target): up to 64 gated pairs per track,
   /// drawn from a pool of 1024 per scan shared by every track
-  /// (docs/algorithms/mfbp.md §Association). Measured with no cap, 10 runs
+  /// (docs/algorithms/mfbp.md §Evidence and association). Measured with no cap, 10 runs
   /// each: the longest list was 47 / 56 on seed000-s2 / -s3 and the most
   /// pairs in one scan 300 / 535; the pool costs what 16 per track did.
   static constexpr std::size_t kMaxTrackGatePairs = 64;

@@ -152,7 +152,7 @@ class Associator {
   /// scan's pool of kPool; if their sum does not fit, the lists are cut
   /// to a common quota (pool_quotas) and gated again, so the pairs dropped
   /// are the least likely ones of the tracks that gate the most
-  /// (docs/algorithms/mfbp.md §Association).
+  /// (docs/algorithms/mfbp.md §Evidence and association).
   std::size_t add_targets(std::size_t k, const Scan& s, const Tracks& tracks, const MfbpParams<T>& p,
                           const ModelConstants<T>& mc, TrackList& bp_track, std::uint64_t& dropped_pairs) {
     std::size_t used = 0;

@@ -4,7 +4,7 @@
 // MF-BP has four scratch capacities beyond the four every tracker shares:
 // the gated pairs kept per track and scan and the pool of gated pairs per
 // scan that every track draws from (the sparse association of seed 000
-// eqs. (99)-(102) runs on them; docs/algorithms/mfbp.md §Association), the
+// eqs. (99)-(102) runs on them; docs/algorithms/mfbp.md §Evidence and association), the
 // clutter-seeding grid and the ranked two-point birth candidates
 // (docs/algorithms/mfbp.md §Birth). A
 // user caps type written before they existed still compiles: the accessors

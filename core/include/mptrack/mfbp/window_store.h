@@ -10,7 +10,7 @@
 // measurement, the clutter statistics per source (eqs. (54)-(55), (69))
 // that the clutter chain reads, and the pool of gated (track, measurement)
 // beliefs of eqs. (99)-(102) every track's edges on it point into (a track
-// keeps its offset and count; docs/algorithms/mfbp.md §Association).
+// keeps its offset and count; docs/algorithms/mfbp.md §Evidence and association).
 #pragma once
 
 #include <algorithm>
