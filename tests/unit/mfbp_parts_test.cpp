@@ -50,22 +50,21 @@ void fill_scan(Slot& t, std::size_t k) {
   t.extr[k] = tag(12, k);
   t.missed[k] = tag(13, k);
   t.n_edges[k] = static_cast<std::uint8_t>(14 + k);
-  t.edge_meas[k].fill(static_cast<std::uint16_t>(15 + k));
-  t.edge_w[k].fill(tag(16, k));
+  t.edge_begin[k] = static_cast<std::uint16_t>(15 + k);
   t.best[k] = static_cast<std::int32_t>(17 + k);
   t.biasf[k] = Slot::Vec2::Constant(tag(18, k));
   t.qk[k] = tag(19, k);
   t.mate[k] = static_cast<std::uint16_t>(20 + k);
 }
 
-// True if window scan d holds what scan k held before the shift (all 20 fields).
+// True if window scan d holds what scan k held before the shift (all 19 fields).
 bool holds_scan(const Slot& t, std::size_t d, std::size_t k) {
   return t.xf[d](0) == tag(1, k) && t.xs[d](3) == tag(2, k) && t.Pf[d].get()(1, 2) == tag(3, k) &&
          t.Ps[d].get()(3, 3) == tag(4, k) && t.igf[d].b == tag(5, k) && t.igs[d].b == tag(6, k) &&
          t.amp[d].s == tag(7, k) && t.xi1[d] == tag(8, k) && t.xi0[d] == tag(9, k) &&
          t.visf[d] == tag(10, k) && t.vis[d] == tag(11, k) && t.extr[d] == tag(12, k) &&
-         t.missed[d] == tag(13, k) && std::size_t{t.n_edges[d]} == 14 + k && std::size_t{t.edge_meas[d][2]} == 15 + k &&
-         t.edge_w[d][1] == tag(16, k) && t.best[d] == static_cast<std::int32_t>(17 + k) &&
+         t.missed[d] == tag(13, k) && std::size_t{t.n_edges[d]} == 14 + k && std::size_t{t.edge_begin[d]} == 15 + k &&
+         t.best[d] == static_cast<std::int32_t>(17 + k) &&
          t.biasf[d](1) == tag(18, k) && t.qk[d] == tag(19, k) && std::size_t{t.mate[d]} == 20 + k;
 }
 
@@ -211,6 +210,9 @@ TEST_CASE("mfbp caps accessors: members read when present, defaults otherwise") 
   CHECK(mfbp::kMaxClutterGridCells<Caps5Small> == 100);
   CHECK(mfbp::kMaxBirthCandidates<Caps5Small> == 4);
   CHECK(mfbp::kMaxBirthCandidates<DefaultCaps> == DefaultCaps::kMaxBirthCandidates);
+  // Without kMaxGatePool every track's full list fits: 4 x 8 and 4 x 3.
+  CHECK(mfbp::kMaxGatePool<Caps5> == 32);
+  CHECK(mfbp::kMaxGatePool<Caps5Small> == 12);
 }
 
 // init() with the smallest window and n births per window.

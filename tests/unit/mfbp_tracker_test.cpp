@@ -508,3 +508,60 @@ TEST_CASE("mfbp gate-pair cap: pairs beyond Caps::kMaxGatePairs are counted and 
   }
   static_assert(mfbp::kMaxGatePairs<TestCaps> == 8, "the test assumes the default 8 pairs");
 }
+
+namespace {
+
+// 8 pairs per track from a pool of 10 per scan.
+struct PoolCaps : TestCaps {
+  static constexpr std::size_t kMaxTrackGatePairs = 8;
+  static constexpr std::size_t kMaxGatePool = 10;
+};
+
+// Two targets at 30 km, azimuths 0.6 and 0.9 rad, tracked for 6 scans;
+// on the 7th scan n_a and n_b distinct detections fall inside their gates
+// (as in the test above). Returns the pairs dropped on that scan and its status.
+template <class Caps>
+std::uint64_t two_track_drops(std::size_t n_a, std::size_t n_b, Status& last) {
+  auto trk = make_tracker<float, Caps>(1, 1);
+  Scan<float, Caps::kMaxMeasurements> scan;
+  std::uint64_t before = 0;
+  for (int k = 0; k < 7; ++k) {
+    scan.time_us = 1000000u + static_cast<std::uint64_t>(k) * 1250000u;
+    scan.measurements.clear();
+    const float az[2] = {0.6f, 0.9f};
+    const std::size_t n[2] = {k < 6 ? 1u : n_a, k < 6 ? 1u : n_b};
+    for (int t = 0; t < 2; ++t) {
+      for (std::size_t j = 0; j < n[t]; ++j) {
+        Measurement<float> m;
+        m.range_m = 30000.0f + 1.0f * static_cast<float>(j);
+        m.azimuth_rad = az[t] + 0.00002f * static_cast<float>(j);
+        m.amplitude = 6.0f;
+        REQUIRE(scan.measurements.push_back(m) == Status::kOk);
+      }
+    }
+    before = trk->counters().association_cap_hits;
+    last = trk->step(scan);
+    if (k < 6) REQUIRE(trk->counters().association_cap_hits == before);
+  }
+  return trk->counters().association_cap_hits - before;
+}
+
+}  // namespace
+
+TEST_CASE("mfbp gate pool: a short pool cuts the longest lists to a common quota, counted") {
+  // Track A gates 3 detections, track B 12 (B's list holds 8). Their lists,
+  // 3 + 8 = 11, overflow the pool of 10: the quota is the largest q with
+  // min(3, q) + min(8, q) <= 10, q = 7, so A keeps its 3 and B 7 of its 12:
+  // 5 pairs dropped (4 of them by the per-track list, 1 by the pool).
+  Status st = Status::kOk;
+  CHECK(two_track_drops<PoolCaps>(3, 12, st) == 5u);
+  CHECK(st == Status::kCapacityExceeded);
+  // Both at 12: q = 5 each, 2 x 7 = 14 dropped.
+  CHECK(two_track_drops<PoolCaps>(12, 12, st) == 14u);
+  // 3 + 7 fit exactly: nothing is dropped.
+  CHECK(two_track_drops<PoolCaps>(3, 7, st) == 0u);
+  CHECK(st == Status::kOk);
+  // Without a pool member the pool holds every list: B's list alone drops 4.
+  static_assert(mfbp::kMaxGatePool<TestCaps> == TestCaps::kMaxTargets * 8);
+  CHECK(two_track_drops<TestCaps>(3, 12, st) == 4u);
+}

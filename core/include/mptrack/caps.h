@@ -6,8 +6,8 @@
 //   mptrack::MfbpTracker<float, mptrack::SmallBoardCaps> tracker;  // placed in .bss
 // The four capacities every component shares (kMaxTargets, kMaxMeasurements,
 // kMaxClutterComponents, kMaxWindow) are required. The capacities of one
-// tracker only (MF-BP: kMaxGatePairs, kMaxClutterGridCells,
-// kMaxBirthCandidates; GM-PHD/CPHD: kMaxMixtureComponents; CBMeMBer:
+// tracker only (MF-BP: kMaxGatePairs, kMaxTrackGatePairs, kMaxGatePool,
+// kMaxClutterGridCells, kMaxBirthCandidates; GM-PHD/CPHD: kMaxMixtureComponents; CBMeMBer:
 // kMaxComponentsPerBernoulli, kMaxRawComponentsPerBernoulli) are optional:
 // a caps type without them gets the values of the presets below (read
 // through MPTRACK_OPTIONAL_CAP traits: mfbp/mfbp_caps.h, rfs/rfs_caps.h).
@@ -26,15 +26,24 @@ struct DefaultCaps {
   static constexpr std::size_t kMaxMeasurements = 256;      ///< detections per scan
   static constexpr std::size_t kMaxClutterComponents = 8;   ///< non-uniform clutter components
   static constexpr std::size_t kMaxWindow = 7;              ///< smoothing window length K (scans)
-  /// MF-BP: gated measurements kept per track and scan (the most likely
-  /// ones; the rest are dropped and counted in TrackerCounters::association_cap_hits).
-  /// 16: tentative tracks in seed000-s2/-s3's chaff (20-30 per scan) hold
+  /// Multipath MF-BP: gated measurements kept per pseudo-target and scan
+  /// (the most likely ones; the rest are dropped and counted in
+  /// TrackerCounters::association_cap_hits). MF-BP used it per track before
+  /// kMaxTrackGatePairs / kMaxGatePool below. 16: tentative tracks in seed000-s2/-s3's chaff (20-30 per scan) hold
   /// many gated measurements; one run dropped 1 803 / 5 962 pairs at 8 (38 /
   /// 46 of 341 steps), 222 / 1 838 at 16 (19 / 39 steps) and 4 / 165 at 32
   /// (1 / 9 steps), with the same OSPA at 16 and 32. 32 would cost MF-BP
   /// another ~76 KB here and push the Cortex-M7 image past its 512 KiB
   /// (bench/README.md); LargeCaps has 32.
   static constexpr std::size_t kMaxGatePairs = 16;
+  /// MF-BP reads these two instead of kMaxGatePairs (which the multipath
+  /// tracker keeps per pseudo-target): up to 64 gated pairs per track,
+  /// drawn from a pool of 1024 per scan shared by every track
+  /// (docs/algorithms/mfbp.md §Evidence and association). Measured with no cap, 10 runs
+  /// each: the longest list was 47 / 56 on seed000-s2 / -s3 and the most
+  /// pairs in one scan 300 / 535; the pool costs what 16 per track did.
+  static constexpr std::size_t kMaxTrackGatePairs = 64;
+  static constexpr std::size_t kMaxGatePool = 1024;
   /// MF-BP: cells of the clutter-seeding grid (the grid is coarsened until
   /// the region fits).
   static constexpr std::size_t kMaxClutterGridCells = 512;
@@ -76,6 +85,8 @@ struct LargeCaps {
   static constexpr std::size_t kMaxClutterComponents = 8;
   static constexpr std::size_t kMaxWindow = 7;
   static constexpr std::size_t kMaxGatePairs = 32;
+  static constexpr std::size_t kMaxTrackGatePairs = 64;
+  static constexpr std::size_t kMaxGatePool = 8192;
   static constexpr std::size_t kMaxClutterGridCells = 512;
   static constexpr std::size_t kMaxBirthCandidates = 32;
   static constexpr std::size_t kMaxMixtureComponents = 512;

@@ -9,7 +9,10 @@
 //
 // The Associator owns the BP and the per-scan moments scratch; it counts
 // BP runs and iterations in the caller's AssociationStats, and gated pairs
-// dropped by the kMaxGatePairs cap in TrackerCounters::association_cap_hits.
+// dropped by the per-track list (kMaxGatePairs) or the scan's shared pool
+// (kMaxGatePool, mfbp_caps.h) in TrackerCounters::association_cap_hits.
+// The edge beliefs of a scan live in its ScanSlot's pool; each track keeps
+// an offset and a count there (docs/algorithms/mfbp.md §Evidence and association).
 #pragma once
 
 #include <array>
@@ -45,7 +48,8 @@ class Associator {
   static constexpr std::size_t kMaxMeas = Caps::kMaxMeasurements;
   static constexpr std::size_t kSources = Caps::kMaxClutterComponents + 1;
   static constexpr std::size_t kMaxGate = kMaxGatePairs<Caps>;
-  using Bp = AssociationBp<T, kMaxTargets, kMaxMeas, kSources, kMaxTargets * kMaxGate>;
+  static constexpr std::size_t kPool = kMaxGatePool<Caps>;
+  using Bp = AssociationBp<T, kMaxTargets, kMaxMeas, kSources, kPool>;
   using Tracks = TrackTable<T, Caps>;
   using Scan = ScanSlot<T, Caps>;
   using Sources = ClutterSources<kSources>;
@@ -144,9 +148,41 @@ class Associator {
   }
 
   /// Gated target evidence into the BP; bp_track[b] = the track of BP target b.
+  /// Every track keeps up to kMaxGate pairs (the most likely) from the
+  /// scan's pool of kPool; if their sum does not fit, the lists are cut
+  /// to a common quota (pool_quotas) and gated again, so the pairs dropped
+  /// are the least likely ones of the tracks that gate the most
+  /// (docs/algorithms/mfbp.md §Evidence and association).
   std::size_t add_targets(std::size_t k, const Scan& s, const Tracks& tracks, const MfbpParams<T>& p,
                           const ModelConstants<T>& mc, TrackList& bp_track, std::uint64_t& dropped_pairs) {
+    std::size_t used = 0;
+    std::size_t nbt = gate_tracks(k, s, tracks, p, mc, bp_track, false, used, dropped_pairs);
+    if (used > kPool) {
+      pool_quotas(nbt);
+      used = 0;
+      nbt = gate_tracks(k, s, tracks, p, mc, bp_track, true, used, dropped_pairs);
+    }
+    std::size_t b = 0;
+    for (std::size_t i = 0; i < nbt; ++i) {
+      if (bp_.add_target(theta0_[i]) != Status::kOk) continue;
+      for (std::size_t e = begin_[i]; e < std::size_t{begin_[i]} + size_[i]; ++e) {
+        (void)bp_.add_edge(scratch_meas_[e], scratch_v_[e]);
+      }
+      bp_track[b++] = bp_track[i];
+    }
+    return b;
+  }
+
+  /// One gating pass: per gated track its missed evidence, its list (in
+  /// measurement order) in the scratch pool from begin_[b] and its size.
+  /// use_quota: lists are cut to quota_[b]; otherwise to kMaxGate, and
+  /// `used` past kPool tells the caller the pool is short (only the lists
+  /// that fit are written). dropped_pairs: gated pairs not kept.
+  std::size_t gate_tracks(std::size_t k, const Scan& s, const Tracks& tracks, const MfbpParams<T>& p,
+                          const ModelConstants<T>& mc, TrackList& bp_track, bool use_quota, std::size_t& used,
+                          std::uint64_t& dropped_pairs) {
     std::size_t nbt = 0;
+    std::uint64_t dropped_total = 0;
     for (std::size_t i = 0; i < kMaxTargets; ++i) {
       const TrackSlot<T, Caps>& t = tracks[i];
       const TrackMoments<T>& mo = moments_[i];
@@ -154,27 +190,100 @@ class Associator {
       const model::Mahalanobis2<T> gate(mo.Sz + mc.R);
       if (!gate.valid()) continue;
       const T pd = detection_prob(p, mc.n_order, t.igs[k]);
-      const T theta0 = missed_evidence(pd, t.extr[k], p.pd_invisible);
       GateList<T, kMaxGate> list;
-      const std::size_t dropped = target_evidence(t, mo, gate, s, k, p, mc, list);
-      dropped_pairs += dropped;  // Caps::kMaxGatePairs: the least likely pairs are dropped
-      if (bp_.add_target(theta0) != Status::kOk) continue;
-      const auto order = list.measurement_order();
-      for (std::size_t a = 0; a < list.size; ++a) (void)bp_.add_edge(list.j[order[a]], list.v[order[a]]);
+      if (use_quota) list.cap = quota_[nbt];
+      dropped_total += target_evidence(t, mo, gate, s, k, p, mc, list);
+      theta0_[nbt] = missed_evidence(pd, t.extr[k], p.pd_invisible);
+      size_[nbt] = static_cast<std::uint16_t>(list.size);
+      if (used + list.size <= kPool) {
+        begin_[nbt] = static_cast<std::uint16_t>(used);
+        const auto order = list.measurement_order();
+        for (std::size_t a = 0; a < list.size; ++a) {
+          scratch_meas_[used + a] = list.j[order[a]];
+          scratch_v_[used + a] = list.v[order[a]];
+        }
+      }
+      used += list.size;
       bp_track[nbt++] = i;
     }
+    if (use_quota || used <= kPool) dropped_pairs += dropped_total;
     return nbt;
+  }
+
+  /// Per-track quotas when the lists of the first pass (size_) overflow
+  /// the pool: the largest q with sum_b min(size_b, q) <= kPool (water
+  /// filling), the rest of the pool one pair each to the first tracks
+  /// still above q (slot order, deterministic).
+  void pool_quotas(std::size_t nbt) {
+    std::size_t q = 0;
+    for (std::size_t lo = 0, hi = kMaxGate; lo <= hi && hi > 0;) {
+      const std::size_t mid = (lo + hi) / 2;
+      std::size_t sum = 0;
+      for (std::size_t b = 0; b < nbt; ++b) sum += size_[b] < mid ? size_[b] : mid;
+      if (sum <= kPool) {
+        q = mid;
+        lo = mid + 1;
+      } else {
+        hi = mid - 1;
+      }
+    }
+    std::size_t left = kPool;
+    for (std::size_t b = 0; b < nbt; ++b) {
+      quota_[b] = static_cast<std::uint16_t>(size_[b] < q ? size_[b] : q);
+      left -= quota_[b];
+    }
+    for (std::size_t b = 0; b < nbt && left > 0; ++b) {
+      if (size_[b] > q) {
+        ++quota_[b];
+        --left;
+      }
+    }
   }
 
   /// Missed and edge beliefs, amplitude statistics and visibility messages
   /// of every track in the BP; new_share[j] += its edge beliefs.
-  T store_track_beliefs(std::size_t k, const Scan& s, Tracks& tracks, const MfbpParams<T>& p,
+  T store_track_beliefs(std::size_t k, Scan& s, Tracks& tracks, const MfbpParams<T>& p,
                         const ModelConstants<T>& mc, const TrackList& bp_track, std::size_t nbt,
                         std::array<T, kMaxMeas>& new_share) {
     const T d = p.amplitude.threshold;
     T delta = T(0);
-    for (std::size_t i = 0; i < nbt; ++i) {
-      TrackSlot<T, Caps>& t = tracks[bp_track[i]];
+    std::size_t used = 0;
+    for (std::size_t i = 0, b = 0; i < kMaxTargets; ++i) {
+      if (b < nbt && bp_track[b] == i) {
+        store_beliefs(k, s, tracks[i], b++, p, mc, d, used, new_share, delta);
+      } else {
+        keep_stale_edges(k, s, tracks[i], used);
+      }
+    }
+    for (std::size_t e = 0; e < used; ++e) {
+      s.edge_meas[e] = scratch_meas_[e];
+      s.edge_w[e] = scratch_v_[e];
+    }
+    return delta;
+  }
+
+  /// A track in the scan (moments or gate failed on this pass) that is not
+  /// in the BP keeps its previous beliefs; its edges move to the new pool
+  /// (as many as fit: the BP's own edges never exceed kPool, these may).
+  void keep_stale_edges(std::size_t k, const Scan& s, TrackSlot<T, Caps>& t, std::size_t& used) {
+    if (!t.alive || !t.participates(k) || t.n_edges[k] == 0) return;
+    std::size_t n = t.n_edges[k];
+    if (n > kPool - used) n = kPool - used;
+    for (std::size_t a = 0; a < n; ++a) {
+      scratch_meas_[used + a] = s.edge_meas[t.edge_begin[k] + a];
+      scratch_v_[used + a] = s.edge_w[t.edge_begin[k] + a];
+    }
+    t.edge_begin[k] = static_cast<std::uint16_t>(used);
+    t.n_edges[k] = static_cast<std::uint8_t>(n);
+    used += n;
+  }
+
+  /// BP target i's missed and edge beliefs into track t (edges into the
+  /// scratch pool from `used`).
+  void store_beliefs(std::size_t k, const Scan& s, TrackSlot<T, Caps>& t, std::size_t i, const MfbpParams<T>& p,
+                     const ModelConstants<T>& mc, T d, std::size_t& used, std::array<T, kMaxMeas>& new_share,
+                     T& delta) {
+    {
       const T missed = bp_.missed_belief(i);
       track_delta(missed, t.missed[k], delta);
       t.missed[k] = missed;
@@ -182,11 +291,12 @@ class Associator {
       T best_w = missed;
       std::int32_t best_j = -1;
       AmplitudeStats<T> as{};
+      t.edge_begin[k] = static_cast<std::uint16_t>(used);
       for (std::size_t e = bp_.edge_begin(i); e < bp_.edge_end(i); ++e) {
         const std::size_t j = bp_.edge_meas(e);
         const T a = bp_.edge_belief(e);
-        t.edge_meas[k][ne] = static_cast<std::uint16_t>(j);
-        t.edge_w[k][ne] = a;
+        scratch_meas_[used + ne] = static_cast<std::uint16_t>(j);
+        scratch_v_[used + ne] = a;
         ++ne;
         new_share[j] += a;
         as.w += a;
@@ -196,12 +306,12 @@ class Associator {
           best_j = static_cast<std::int32_t>(j);
         }
       }
+      used += ne;
       t.n_edges[k] = static_cast<std::uint8_t>(ne);
       t.best[k] = best_j;
       t.amp[k] = as;
       store_visibility_messages(t, k, bp_.lambda(i), detection_prob(p, mc.n_order, t.igs[k]), p.pd_invisible);
     }
-    return delta;
   }
 
   /// Visibility messages xi(s) from the association (eq. (65)-(66)), normalised.
@@ -249,6 +359,14 @@ class Associator {
 
   std::array<TrackMoments<T>, kMaxTargets> moments_{};
   Bp bp_{};
+  // Per BP target of the scan being associated: missed evidence, list
+  // offset and size in the scratch pool, quota when the pool is short.
+  std::array<T, kMaxTargets> theta0_{};
+  std::array<std::uint16_t, kMaxTargets> begin_{}, size_{}, quota_{};
+  // Scratch pool: the gated lists (log evidence) before the BP, the new
+  // edge beliefs of the scan after it (copied into ScanSlot::edge_*).
+  std::array<std::uint16_t, kPool> scratch_meas_{};
+  std::array<T, kPool> scratch_v_{};
 };
 
 }  // namespace mptrack::mfbp

@@ -178,9 +178,9 @@ void cavity_moments(const TrackSlot<T, Caps>& t, std::size_t k, const ScanSlot<T
   if (!(w > p.w_min) || t.n_edges[k] == 0) return;
   Vec2<T> acc = Vec2<T>::Zero();
   T w_sum = T(0);
-  for (std::size_t e = 0; e < t.n_edges[k]; ++e) {
-    const std::size_t j = t.edge_meas[k][e];
-    const T a = t.edge_w[k][e];
+  for (std::size_t e = t.edge_begin[k]; e < std::size_t{t.edge_begin[k]} + t.n_edges[k]; ++e) {
+    const std::size_t j = s.edge_meas[e];
+    const T a = s.edge_w[e];
     acc(0) += a * (s.r[j] - z_hat(0));
     acc(1) += a * model::wrap_angle(s.az[j] - z_hat(1));
     w_sum += a;
@@ -254,19 +254,22 @@ void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Ca
   }
 }
 
-/// The G most likely gated measurements of one track, by log evidence
-/// (sorted insertion; ties keep the earlier measurement).
+/// The `cap` (<= G) most likely gated measurements of one track, by log
+/// evidence (sorted insertion; ties keep the earlier measurement). cap is
+/// below G when the scan's shared pool is short (association.h).
 template <class T, std::size_t G>
 struct GateList {
   std::array<T, G> v{};
   std::array<std::uint16_t, G> j{};
   std::size_t size = 0;
+  std::size_t cap = G;
 
   /// Offers (log_theta, meas); returns true if a pair was dropped (cap).
   bool offer(T log_theta, std::size_t meas) {
     bool dropped = false;
-    if (size == G) {
+    if (size == cap) {
       dropped = true;
+      if (cap == 0) return dropped;
       if (!(log_theta > v[size - 1])) return dropped;
       --size;
     }

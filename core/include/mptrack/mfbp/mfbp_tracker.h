@@ -46,10 +46,12 @@
 //   * measurements: a Scan cannot exceed Caps::kMaxMeasurements, so no
 //     measurement is dropped for capacity; invalid ones are skipped and
 //     counted in measurements_invalid (step returns kPartial);
-//   * gated pairs: each track keeps its Caps::kMaxGatePairs most likely
-//     measurements per scan (association_cap_hits counts the dropped
-//     pairs once per window that associates the scan; step returns
-//     kCapacityExceeded);
+//   * gated pairs: each track keeps its mfbp::kMaxGatePairs<Caps> most
+//     likely measurements per scan, from a pool of mfbp::kMaxGatePool<Caps>
+//     per scan shared by every track; a short pool cuts the longest lists
+//     to a common quota (association.h). association_cap_hits counts the
+//     dropped pairs once per window that associates the scan; step returns
+//     kCapacityExceeded;
 //   * tracks: a birth that finds every slot taken evicts the least likely
 //     tentative track if that one is less likely than a newborn
 //     (tentative_evicted; not a cap hit); otherwise it is refused
@@ -103,8 +105,10 @@ class MfbpTracker {
   static constexpr std::size_t kMaxMeas = Caps::kMaxMeasurements;
   static constexpr std::size_t kMaxComp = Caps::kMaxClutterComponents;
   static constexpr std::size_t kMaxWindow = Caps::kMaxWindow;
-  /// Gated measurements kept per track and scan (Caps::kMaxGatePairs).
+  /// Gated measurements kept per track and scan (mfbp_caps.h).
   static constexpr std::size_t kMaxGate = mfbp::kMaxGatePairs<Caps>;
+  /// Gated pairs per scan shared by every track (mfbp_caps.h).
+  static constexpr std::size_t kGatePool = mfbp::kMaxGatePool<Caps>;
 
   using ScanType = Scan<T, kMaxMeas>;
   using Estimate = ScanEstimate<T, kMaxTargets, kMaxComp>;

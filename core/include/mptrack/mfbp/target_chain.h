@@ -100,9 +100,9 @@ void pseudo_measurement_update(const TrackSlot<T, Caps>& t, const TrackSlot<T, C
   const TrackSlot<T, Caps>* pooled[2] = {&t, mate};
   for (const TrackSlot<T, Caps>* src : pooled) {
     if (src == nullptr) continue;
-    for (std::size_t e = 0; e < src->n_edges[k]; ++e) {
-      const std::size_t j = src->edge_meas[k][e];
-      const T a = src->edge_w[k][e];
+    for (std::size_t e = src->edge_begin[k]; e < std::size_t{src->edge_begin[k]} + src->n_edges[k]; ++e) {
+      const std::size_t j = s.edge_meas[e];
+      const T a = s.edge_w[e];
       acc(0) += a * (s.r[j] - z_ref(0));
       acc(1) += a * model::wrap_angle(s.az[j] - z_ref(1));
       w_sum += a;
@@ -116,7 +116,9 @@ void pseudo_measurement_update(const TrackSlot<T, Caps>& t, const TrackSlot<T, C
     T dop = T(0);
     for (const TrackSlot<T, Caps>* src : pooled) {
       if (src == nullptr) continue;
-      for (std::size_t e = 0; e < src->n_edges[k]; ++e) dop += src->edge_w[k][e] * s.dop[src->edge_meas[k][e]];
+      for (std::size_t e = src->edge_begin[k]; e < std::size_t{src->edge_begin[k]} + src->n_edges[k]; ++e) {
+        dop += s.edge_w[e] * s.dop[s.edge_meas[e]];
+      }
     }
     const Eigen::Matrix<T, 3, 1> y3(y_bar(0), y_bar(1), dop / w_sum);
     Eigen::Matrix<T, 3, 3> R3 = Eigen::Matrix<T, 3, 3>::Zero();

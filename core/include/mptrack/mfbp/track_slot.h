@@ -27,7 +27,6 @@ namespace mptrack::mfbp {
 template <class T, class Caps>
 struct TrackSlot {
   static constexpr std::size_t kMaxWindow = Caps::kMaxWindow;
-  static constexpr std::size_t kMaxGate = kMaxGatePairs<Caps>;
   using Vec2 = mfbp::Vec2<T>;
   using Vec4 = mfbp::Vec4<T>;
   using Mat4 = mfbp::Mat4<T>;
@@ -56,8 +55,8 @@ struct TrackSlot {
   std::array<AmpStats, kMaxWindow> amp{};
   std::array<T, kMaxWindow> xi1{}, xi0{}, visf{}, vis{}, extr{}, missed{};
   std::array<std::uint8_t, kMaxWindow> n_edges{};
-  std::array<std::array<std::uint16_t, kMaxGate>, kMaxWindow> edge_meas{};
-  std::array<std::array<T, kMaxGate>, kMaxWindow> edge_w{};
+  /// First edge of scan k in that scan's pool (ScanSlot::edge_meas / edge_w).
+  std::array<std::uint16_t, kMaxWindow> edge_begin{};
   std::array<std::int32_t, kMaxWindow> best{};
   std::array<Vec2, kMaxWindow> biasf{};  ///< faded whitened innovation after the update at k
   std::array<T, kMaxWindow> qk{};    ///< process noise used to predict into k [(m/s^2)^2]
@@ -158,8 +157,7 @@ struct TrackSlot {
       extr[k] = T(0);
       missed[k] = T(0);
       n_edges[k] = 0;
-      edge_meas[k].fill(0);
-      edge_w[k].fill(T(0));
+      edge_begin[k] = 0;
       best[k] = 0;
       biasf[k] = Vec2::Zero();
       qk[k] = T(0);
@@ -182,8 +180,7 @@ struct TrackSlot {
     extr[d] = extr[k];
     missed[d] = missed[k];
     n_edges[d] = n_edges[k];
-    edge_meas[d] = edge_meas[k];
-    edge_w[d] = edge_w[k];
+    edge_begin[d] = edge_begin[k];
     best[d] = best[k];
     mate[d] = mate[k];
     biasf[d] = biasf[k];

@@ -7,8 +7,10 @@
 // pair that reaches before the window has its second point on an overlap
 // scan and was considered already (docs/algorithms/mfbp.md §Window schedule).
 // Each scan carries its measurements, the association beliefs summed per
-// measurement and the clutter statistics per source (eqs. (54)-(55), (69))
-// that the clutter chain reads.
+// measurement, the clutter statistics per source (eqs. (54)-(55), (69))
+// that the clutter chain reads, and the pool of gated (track, measurement)
+// beliefs of eqs. (99)-(102) every track's edges on it point into (a track
+// keeps its offset and count; docs/algorithms/mfbp.md §Evidence and association).
 #pragma once
 
 #include <algorithm>
@@ -19,6 +21,7 @@
 #include "mptrack/measurement.h"
 #include "mptrack/mfbp/amplitude_model.h"
 #include "mptrack/mfbp/amplitude_stats.h"
+#include "mptrack/mfbp/mfbp_caps.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/normal_wishart.h"
 #include "mptrack/model/measurement_validator.h"
@@ -32,6 +35,7 @@ template <class T, class Caps>
 struct ScanSlot {
   static constexpr std::size_t kMaxMeas = Caps::kMaxMeasurements;
   static constexpr std::size_t kSources = Caps::kMaxClutterComponents + 1;
+  static constexpr std::size_t kPool = kMaxGatePool<Caps>;
 
   std::uint64_t time_us = 0;
   std::size_t count = 0;
@@ -46,6 +50,10 @@ struct ScanSlot {
   std::array<std::uint16_t, kMaxMeas> by_range{};  ///< indices sorted by (range, index)
   std::array<NwStats<T>, kSources> nw_stats{};       ///< per source slot (0 = uniform)
   std::array<AmplitudeStats<T>, kSources> amp_stats{};
+  /// Edges of every track on this scan: measurement and belief a_hat^t_ij
+  /// (TrackSlot::edge_begin / n_edges index them).
+  std::array<std::uint16_t, kPool> edge_meas{};
+  std::array<T, kPool> edge_w{};
 
   void clear_source_stats() {
     for (std::size_t src = 0; src < kSources; ++src) {
