@@ -38,6 +38,12 @@ constexpr Column kColumns[] = {
     {"nft", "false tracks per scan", 1.0, "%.2f"},
 };
 
+std::string fmt1(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", x);
+  return b;
+}
+
 std::string cell(const nlohmann::ordered_json& j, const Column& c) {
   if (!j.contains(c.key) || !j[c.key].is_number()) return "n/a";
   char b[48];
@@ -54,10 +60,14 @@ nlohmann::ordered_json sea_summary_to_json(const SeaSummary& s) {
   j["ospa"] = {{"cutoff_m", kSeaOspaCutoff_m}, {"order_p", kSeaOspaOrder}};
   // Top-level names of seed 003's table; the harness's evaluator may fill
   // them itself, then its values stand.
-  if (!j.contains("rmse_range_m")) j["rmse_range_m"] = s.errors.rmse_range_m();
-  if (!j.contains("rmse_velocity_mps")) j["rmse_velocity_mps"] = s.errors.rmse_velocity_mps();
-  j["sea"] = {{"rmse_range_m", s.errors.rmse_range_m()},
-              {"rmse_velocity_mps", s.errors.rmse_velocity_mps()},
+  // null when no confirmed track was ever paired with a target.
+  const nlohmann::ordered_json rmse_r = s.errors.matched > 0 ? nlohmann::ordered_json(s.errors.rmse_range_m()) : nullptr;
+  const nlohmann::ordered_json rmse_v =
+      s.errors.matched > 0 ? nlohmann::ordered_json(s.errors.rmse_velocity_mps()) : nullptr;
+  if (!j.contains("rmse_range_m")) j["rmse_range_m"] = rmse_r;
+  if (!j.contains("rmse_velocity_mps")) j["rmse_velocity_mps"] = rmse_v;
+  j["sea"] = {{"rmse_range_m", rmse_r},
+              {"rmse_velocity_mps", rmse_v},
               {"matched_target_scans", s.errors.matched},
               {"target_scans", s.errors.truths},
               {"matching", "per scan, greedy by Mahalanobis distance on (range, range rate) with deviations (range bin, Doppler bin) within 9.4, each confirmed track once"},
@@ -72,7 +82,7 @@ std::string sea_compare_to_markdown(const SeaCompareConfig& cfg, const std::vect
   std::string s = "# " + cfg.scenario.name + ": MP / MP-NN / NEMP over SCR\n\n";
   s += std::to_string(cfg.runs) + " run(s) per SCR x " + std::to_string(cfg.scenario.num_scans) + " scans, seed " +
        std::to_string(cfg.seed) + "; every tracker and every SCR on the same scenes. Plots per scan " +
-       std::to_string(r.front().front().plots_per_scan) + ".\n\n| metric | tracker |";
+       fmt1(r.front().front().plots_per_scan) + ".\n\n| metric | tracker |";
   for (const auto& col : r) s += " " + std::to_string(static_cast<int>(col.front().scr_db)) + " dB |";
   s += "\n|---|---|";
   for (std::size_t i = 0; i < r.size(); ++i) s += "---:|";
@@ -84,7 +94,7 @@ std::string sea_compare_to_markdown(const SeaCompareConfig& cfg, const std::vect
       s += "\n";
     }
   }
-  s += "\nn/a: the field is not in summary.json yet. IDS and Frag per target (track scores); RMSE of the confirmed "
+  s += "\nn/a: the field is not in summary.json (yet), or no track was paired with a target. IDS and Frag per target (track scores); RMSE of the confirmed "
        "track paired with each target (Mahalanobis on range and range rate, within 9.4); OSPA on range with p = 2, c = 9.4 x 15 m.\n";
   return s;
 }

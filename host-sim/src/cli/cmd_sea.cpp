@@ -87,6 +87,7 @@ int run_sea_compare_command(const std::string& scenario, const std::string& trac
   const std::string dir = out_dir.empty() ? "out/compare-" + cfg.scenario.name : out_dir;
   StagedOutputDir staged(dir);
   const auto result = run_sea_compare(cfg);
+  std::filesystem::create_directories(staged.path());
   std::ofstream md(staged.path() + "/compare.md");
   md << sea_compare_to_markdown(cfg, result);
   std::ofstream js(staged.path() + "/compare.json");
