@@ -12,6 +12,7 @@
 #include "run/frame_input.h"
 #include "mptrack/scenario/generator.h"
 #include "mptrack/scenario/scenario_spec.h"
+#include "mptrack/sea/sea_scenario.h"
 #include "mptrack/status.h"
 #include "mptrack/track_report.h"
 
@@ -52,6 +53,9 @@ struct TrackerSetup {
   /// The raw-ADC scenario behind `spec` (its measurement-level view), or
   /// nullptr: what raw-frame trackers configure their signal model from.
   std::shared_ptr<const adc::AdcScenario> raw_scenario;
+  /// The seed 003 sea scenario behind `spec` (run/sea_source.h), or nullptr:
+  /// what the sea trackers (mfbp, mfbp-nn, nemp) configure their radar from.
+  std::shared_ptr<const sea::SeaScenario> sea_scenario;
 };
 
 class TrackerAdapter {

@@ -150,7 +150,7 @@ def run_epochs(stage, params, forward, data, norm, epochs, lr, batch, rng, mask_
               f" {time.process_time():.0f} s CPU)", flush=True)
 
 
-def evaluate(cnn, mlp, data, norm, rng, max_clutter):
+def evaluate(cnn, mlp, data, norm, rng, max_clutter, fixed_belief=None):
     pos = np.flatnonzero(data["labels"] == 1)
     neg = np.flatnonzero(data["labels"] == 0)
     if len(neg) > max_clutter:
@@ -161,6 +161,8 @@ def evaluate(cnn, mlp, data, norm, rng, max_clutter):
         for s in range(0, len(idx), 1024):
             b = idx[s:s + 1024]
             w = torch.from_numpy(data["belief"][b].astype(np.float32))
+            if fixed_belief is not None:
+                w = torch.full((len(b),), fixed_belief, dtype=torch.float32)
             out.append(mlp(cnn(to_input(data["patches"][b], *norm)), w).numpy())
     scores = np.concatenate(out)
     labels = data["labels"][idx]
@@ -346,6 +348,12 @@ def main():
                          "runs": train["meta"]["runs"], "scenario": train["meta"]["scenario"]}}
     results["in_domain"] = evaluate(folded, mlp, test_in, norm, rng, a.eval_clutter)
     results["out_of_domain"] = evaluate(folded, mlp, test_out, norm, rng, a.eval_clutter)
+    # The same patches with an uninformative belief 0.5: what the patch alone
+    # is worth (MP-NN's hard decision uses it).
+    results["in_domain_belief_0_5"] = evaluate(folded, mlp, test_in, norm, np.random.default_rng(a.seed),
+                                               a.eval_clutter, 0.5)
+    results["out_of_domain_belief_0_5"] = evaluate(folded, mlp, test_out, norm, np.random.default_rng(a.seed),
+                                                   a.eval_clutter, 0.5)
     results["in_domain"]["scenario"] = test_in["meta"]["scenario"]
     results["out_of_domain"]["scenario"] = test_out["meta"]["scenario"]
 

@@ -20,3 +20,15 @@ TEST_CASE("mfbp-nn and nemp are registered and refuse without trained weights") 
     CHECK(init_error.find("train-classifier") != std::string::npos);
   }
 }
+
+TEST_CASE("mfbp-nn and nemp refuse a scenario without range-Doppler patches") {
+  if (!mptrack::classify::kHaveTrainedWeights) return;
+  for (const char* name : {"mfbp-nn", "nemp"}) {
+    std::string error;
+    auto t = mptrack::sim::make_tracker(name, error);
+    REQUIRE(t != nullptr);
+    mptrack::sim::TrackerSetup setup;  // no sea_scenario: a measurement-level scene
+    const std::string init_error = t->init(setup);
+    CHECK(init_error.find("seed003-sea") != std::string::npos);
+  }
+}

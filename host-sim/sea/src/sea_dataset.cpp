@@ -47,7 +47,7 @@ void write_meta(const DatasetConfig& c, const DatasetCounts& n, std::size_t rows
   std::fprintf(f,
                "{\n  \"format\": \"mptrack-sea-dataset/1\",\n  \"scenario\": \"%s\",\n  \"seed\": %llu,\n"
                "  \"runs\": %u,\n  \"run_offset\": %u,\n  \"scr_min_db\": %g,\n  \"scr_max_db\": %g,\n"
-               "  \"scr_step_db\": %g,\n  \"rows\": %zu,\n  \"target_rows\": %llu,\n  \"scenes\": %llu,\n"
+               "  \"scr_step_db\": %g,\n  \"beliefs\": \"%s\",\n  \"rows\": %zu,\n  \"target_rows\": %llu,\n  \"scenes\": %llu,\n"
                "  \"scans\": %llu,\n  \"truth_detected\": %llu,\n  \"truth_total\": %llu,\n"
                "  \"partial_scans\": %llu,\n  \"clusters\": %llu,\n  \"cfar_detections\": %llu,\n"
                "  \"label_rule\": {\"max_range_m\": %g, \"max_doppler_bins\": %g},\n"
@@ -58,11 +58,11 @@ void write_meta(const DatasetConfig& c, const DatasetCounts& n, std::size_t rows
                " - floor_db) * 255 / span_db) clipped\", \"labels.npy\": \"uint8 (N,) 1 = target\","
                " \"scr_db.npy\": \"float32 (N,)\", \"scene.npy\": \"int32 (N,) scr_index * runs + run index\","
                " \"run.npy\": \"int32 (N,)\", \"scan.npy\": \"int32 (N,)\", \"target.npy\": \"int32 (N,) target index or -1\","
-               " \"belief.npy\": \"float32 (N,) tracker association belief, 0.5 placeholder\","
+               " \"belief.npy\": \"float32 (N,) tracker association belief P(target-originated) from MP (mfbp) runs, 0.5 if none\","
                " \"plot.npy\": \"float32 (N, 7) range_m, doppler_hz, range_rate_mps, amplitude, range_bin,"
                " doppler_bin, cells\"}\n}\n",
                c.scenario.name.c_str(), static_cast<unsigned long long>(c.seed), c.runs, c.run_offset, c.scr_min_db,
-               c.scr_max_db, c.scr_step_db, rows, static_cast<unsigned long long>(n.targets),
+               c.scr_max_db, c.scr_step_db, c.beliefs ? "mfbp" : "placeholder 0.5", rows, static_cast<unsigned long long>(n.targets),
                static_cast<unsigned long long>(n.scenes), static_cast<unsigned long long>(n.scans),
                static_cast<unsigned long long>(n.truth_detected), static_cast<unsigned long long>(n.truth_total),
                static_cast<unsigned long long>(n.partial_scans), static_cast<unsigned long long>(n.clusters),
@@ -85,6 +85,17 @@ void write_columns(const DatasetConfig& c, const Columns& col) {
   write_npy(d + "target.npy", col.target, {n});
   write_npy(d + "belief.npy", col.belief, {n});
   write_npy(d + "plot.npy", col.plot, {n, kPlotColumns});
+}
+
+/// Writes a scene's tracker beliefs over its rows (placed scan by scan,
+/// plot by plot from first_row).
+void fill_beliefs(const SceneBeliefs& b, const ScenePlots& scene, std::size_t first_row, std::vector<float>& out) {
+  std::size_t row = first_row;
+  for (std::size_t k = 0; k < scene.plots.size(); ++k) {
+    for (std::size_t j = 0; j < scene.plots[k].size(); ++j, ++row) {
+      if (k < b.size() && j < b[k].size()) out[row] = b[k][j];
+    }
+  }
 }
 
 }  // namespace
@@ -110,7 +121,11 @@ DatasetCounts build_dataset(const DatasetConfig& config) {
       SeaSceneGenerator gen(sc, scenario::derive_seed(config.seed, run));
       SeaScan scan;
       ++n.scenes;
+      const std::size_t first_row = col.labels.size();
+      ScenePlots scene;
       while (gen.next(scan)) {
+        scene.time_s.push_back(scan.time_s + 0.5 * static_cast<double>(sc.pulses) / sc.prf_hz);
+        scene.plots.emplace_back();
         ++n.scans;
         const Status st = det->process(scan.re.data(), scan.im.data());
         if (st == Status::kPartial) ++n.partial_scans;
@@ -118,6 +133,7 @@ DatasetCounts build_dataset(const DatasetConfig& config) {
         std::vector<bool> seen(scan.truth.size(), false);
         for (std::size_t j = 0; j < det->num_plots(); ++j) {
           const seaclutter::SeaPlot& p = det->plot(j);
+          scene.plots.back().push_back(p);
           const int t = label_plot(p.range_m, p.doppler_bin, scan.truth, config.label);
           if (t >= 0) seen[static_cast<std::size_t>(t)] = true;
           const auto& patch = det->patch(j);
@@ -140,6 +156,7 @@ DatasetCounts build_dataset(const DatasetConfig& config) {
         n.truth_total += scan.truth.size();
         for (bool s : seen) n.truth_detected += s ? 1 : 0;
       }
+      if (config.beliefs) fill_beliefs(config.beliefs(sc, scene), scene, first_row, col.belief);
     }
   }
   if (!config.out_dir.empty()) {

@@ -9,6 +9,7 @@
 #include "cli/input_checks.h"
 #include "run/staged_output.h"
 #include "compare.h"
+#include "run/sea_source.h"
 #include "stream/adc_compare.h"
 #include "scenario_json.h"
 
@@ -21,6 +22,7 @@ struct CompareArgs {
   std::string scenario = "seed000-s2";
   std::string trackers;
   std::uint32_t scans = 0;
+  std::string scr;  ///< --scr list (sea scenes)
   CompareConfig config;
 };
 
@@ -48,6 +50,11 @@ int run_adc_compare_command(const CompareArgs& a, const RunOptions& o, const std
 
 int run_compare_command(const CompareArgs& a, const RunOptions& o) {
   const bool is_file = std::filesystem::is_regular_file(a.scenario);
+  if (!is_file && is_sea_scenario(a.scenario)) {
+    return run_sea_compare_command(a.scenario, a.trackers, a.scr, a.config.runs, a.config.seed,
+                                   a.config.mfbp_params, a.config.out_dir, o);
+  }
+  if (!a.scr.empty()) throw std::runtime_error("--scr applies to the seed003-sea scenarios only");
   if (is_adc_scenario(is_file ? "" : a.scenario, is_file ? a.scenario : "")) {
     return run_adc_compare_command(a, o, is_file ? a.scenario : "");
   }
@@ -91,6 +98,8 @@ void add_options(CLI::App& cmd, CompareArgs& a) {
   cmd.add_option("--ospa-p", a.config.ospa_order, "OSPA/GOSPA order p (default: 1 for seed001, 2 for seed000)")
       ->check(number_in(1.0, 64.0));
   cmd.add_option("--mfbp-param", a.config.mfbp_params, kMfbpParamHelp);
+  cmd.add_option("--scr", a.scr, "seed003-sea scenarios: comma-separated SCRs [dB], one table column each "
+                 "(default -20,-16,...,20); trackers default to mfbp,mfbp-nn,nemp");
 }
 
 }  // namespace

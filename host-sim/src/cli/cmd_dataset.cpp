@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "mptrack/sea/sea_dataset.h"
+#include "trackers/sea_beliefs.h"
 
 namespace mptrack::sim {
 
@@ -19,6 +20,7 @@ struct DatasetArgs {
   double pfa = 0.28;
   double scr = -1000.0;  ///< --scr: one SCR for every target (overrides the sweep)
   std::string out;
+  std::string beliefs = "mfbp";  ///< --beliefs: mfbp (MF-BP runs) or none (0.5)
 };
 
 int run_dataset(const DatasetArgs& a) {
@@ -36,6 +38,16 @@ int run_dataset(const DatasetArgs& a) {
   c.seed = a.seed;
   c.detector = sea::detector_params_for(c.scenario);
   c.detector.cfar.pfa = a.pfa;
+  if (a.beliefs == "mfbp") {
+    if (sea_beliefs_available()) {
+      c.beliefs = &mfbp_scene_beliefs;
+    } else {
+      std::fprintf(stderr, "note: no trained classifier header yet: belief.npy keeps the 0.5 placeholder\n");
+    }
+  } else if (a.beliefs != "none") {
+    std::fprintf(stderr, "error: --beliefs must be mfbp or none\n");
+    return 2;
+  }
   c.out_dir = a.out.empty() ? "out/dataset-" + a.scenario : a.out;
   std::filesystem::create_directories(c.out_dir);
   const sea::DatasetCounts n = sea::build_dataset(c);
@@ -66,6 +78,9 @@ Subcommand add_dataset_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "master seed");
   cmd->add_option("--pfa", args->pfa, "CFAR false-alarm probability per cell");
   cmd->add_option("--out", args->out, "output directory (default out/dataset-<scenario>)");
+  cmd->add_option("--beliefs", args->beliefs,
+                  "belief.npy: mfbp = MF-BP's association belief per plot (the MLP's tracker input), none = 0.5")
+      ->capture_default_str();
   return Subcommand{cmd, [args](const RunOptions&) { return run_dataset(*args); }};
 }
 

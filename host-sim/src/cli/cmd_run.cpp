@@ -8,6 +8,7 @@
 #include "cli/input_checks.h"
 #include "run/staged_output.h"
 #include "mptrack/adc/adc_json.h"
+#include "run/sea_source.h"
 #include "runner.h"
 #include "scenario_json.h"
 #include "tracker_registry.h"
@@ -67,7 +68,7 @@ int run_adc_scenario(const RunOptions& o) {
 void add_run_options(CLI::App& app, RunOptions& o) {
   std::string tracker_help = "tracker:";
   for (const auto& t : tracker_list()) tracker_help += "\n  " + t.name + ": " + t.description;
-  app.add_option("--scenario", o.scenario_name, "built-in scenario: seed000-s1 | seed000-s2 | seed000-s3 | seed001-s1..s5 | seed002-othr | seed004-drones | mimo-interference (raw ADC)")
+  app.add_option("--scenario", o.scenario_name, "built-in scenario: seed000-s1 | seed000-s2 | seed000-s3 | seed001-s1..s5 | seed002-othr | seed004-drones | mimo-interference (raw ADC) | seed003-sea-a | seed003-sea-b (sea clutter)")
       ->capture_default_str();
   app.add_option("--scenario-file", o.scenario_file, "load a scenario from JSON (schema: host-sim/scenarios/*.json)")
       ->check(CLI::ExistingFile);
@@ -96,6 +97,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(CLI::IsMember({"keep", "drop"}));
   app.add_option("--csv-runs", o.run.csv_runs, "write CSV rows for the first N runs only (-1 = all)")->capture_default_str();
   app.add_option("--mfbp-param", o.run.mfbp_params, kMfbpParamHelp);
+  app.add_option("--scr", o.scr_db, "seed003-sea scenarios: every target's signal-to-clutter ratio [dB] (default 0)");
   app.add_flag("--no-plot", o.no_plot, "do not write plot.svg");
   app.add_flag("--no-progress", o.no_progress, "no progress output on stderr");
   app.add_flag("--write-detections", o.run.write_detections,
@@ -104,6 +106,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 }
 
 int run_default_command(const RunOptions& o) {
+  if (o.scenario_file.empty() && is_sea_scenario(o.scenario_name)) return run_sea_command(o);
+  if (o.scr_db != RunOptions::kNoScr) throw std::runtime_error("--scr applies to the seed003-sea scenarios only");
   if (is_adc_scenario(o.scenario_name, o.scenario_file)) return run_adc_scenario(o);
   check_raw_adc_only_flags(o.scenario_file.empty() ? o.scenario_name : o.scenario_file, o.rate_hz, o.frames);
   check_raw_adc_only_adc_flags(o.scenario_file.empty() ? o.scenario_name : o.scenario_file, o.adc_format,

@@ -37,6 +37,8 @@ struct RunOptions {
   bool no_plot = false;
   bool no_progress = false;
   bool force = false;                 ///< --force: write even above the output-size limit (input_checks.h)
+  double scr_db = kNoScr;             ///< --scr: every target's SCR [dB] (seed 003 sea scenes)
+  static constexpr double kNoScr = -1e300;  ///< --scr not given: the scenario's
 };
 
 /// A registered subcommand and what it does once parsed.
@@ -76,5 +78,14 @@ bool is_adc_scenario(const std::string& name, const std::string& file);
 /// The raw-ADC scenario of the file (if given, throws on errors) or the
 /// built-in `name`; false if `name` is not a built-in raw-ADC scenario.
 bool load_adc_scenario(const std::string& name, const std::string& file, adc::AdcScenario& out);
+
+// cmd_sea.cpp: the seed 003 sea scenes (sea_runner.h).
+/// The default command on a sea scenario (--scr, --tracker mfbp|mfbp-nn|nemp).
+int run_sea_command(const RunOptions& options);
+/// `compare` on a sea scenario: every tracker at every SCR of `scr_list`
+/// ("-10,0,10"; "" = -20..20 step 4). Returns the exit code.
+int run_sea_compare_command(const std::string& scenario, const std::string& trackers, const std::string& scr_list,
+                            std::uint32_t runs, std::uint64_t seed, const std::vector<std::string>& mfbp_params,
+                            const std::string& out_dir, const RunOptions& options);
 
 }  // namespace mptrack::sim

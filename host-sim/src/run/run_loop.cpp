@@ -24,6 +24,7 @@ std::unique_ptr<TrackerAdapter> make_initialised(const LoopConfig& cfg, const st
   setup.clutter_scale = cfg.clutter_scale;
   setup.mfbp_params = cfg.mfbp_params;
   setup.raw_scenario = cfg.raw_scenario;
+  setup.sea_scenario = cfg.sea_scenario;
   error = tracker->init(setup);
   if (!error.empty()) throw std::runtime_error("tracker " + name + ": " + error);
   return tracker;

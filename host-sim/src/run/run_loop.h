@@ -36,6 +36,7 @@ struct LoopConfig {
   std::string progress_label;
   bool progress = true;                  ///< progress bar on stderr
   std::shared_ptr<const adc::AdcScenario> raw_scenario;  ///< given to the adapters (TrackerSetup)
+  std::shared_ptr<const sea::SeaScenario> sea_scenario;  ///< given to the adapters (TrackerSetup)
 };
 
 /// What every one-tracker Monte Carlo command takes (measurement level,

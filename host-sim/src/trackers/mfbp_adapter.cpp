@@ -9,6 +9,7 @@
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "trackers/core_adapter.h"
 #include "trackers/mfbp_param_override.h"
+#include "trackers/sea_setup.h"
 #include "tracker_registry.h"
 
 namespace mptrack::sim {
@@ -68,6 +69,10 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
       p.mp_max_iterations = 1;
     } else if (variant_ != "mfbp") {
       return "unknown MF-BP variant " + variant_;
+    }
+    if (setup.sea_scenario) {
+      if (variant_ != "mfbp") return variant_ + " does not run on the sea scenes (use mfbp, mfbp-nn or nemp)";
+      configure_sea_mfbp(setup, p);
     }
     const std::string error = apply_mfbp_params(p, setup.mfbp_params);
     if (!error.empty()) return error;

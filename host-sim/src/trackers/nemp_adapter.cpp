@@ -3,9 +3,12 @@
 //            (the paper's MP-NN; no tracker belief yet, so the MLP sees 0.5);
 //   nemp     every detection's features go to MF-BP with the scan and the
 //            NEMP rounds fuse them into the association.
-// Both need the range-Doppler patch of every detection (the seed 003 sea
-// scenes) and the trained weights (./run train-classifier); without either
-// they refuse with a message instead of running a plain MF-BP.
+// Both need the classifier features of every detection, which the seed 003
+// sea scenes' scan source computes once per detection and scan
+// (run/sea_source.h), and the trained weights (./run train-classifier);
+// without either they refuse with a message instead of running a plain MF-BP.
+#include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -15,6 +18,7 @@
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "trackers/core_adapter.h"
 #include "trackers/mfbp_param_override.h"
+#include "trackers/sea_setup.h"
 #include "tracker_registry.h"
 
 namespace mptrack::sim {
@@ -24,11 +28,7 @@ namespace {
 using Tracker = MfbpTracker<double, DefaultCaps>;
 using Nemp = mfbp::NempState<double, DefaultCaps>;
 using Evidence = mfbp::ScanEvidence<DefaultCaps::kMaxMeasurements>;
-
-/// The patch of detection j of a scan (classify::kPatchSize values, 0..255),
-/// or nullptr. SimScan carries no patches yet: the seed 003 sea-clutter
-/// scenes bind their patch field here.
-const float* detection_patch(const scenario::SimScan& /*scan*/, std::size_t /*j*/) { return nullptr; }
+constexpr std::size_t kF = classify::kNumFeatures;
 
 class NempAdapter final : public TrackerAdapter {
  public:
@@ -46,6 +46,9 @@ class NempAdapter final : public TrackerAdapter {
                         "(core/include/mptrack/classify/generated/sea_classifier_weights.h): ./run train-classifier";
     }
     if (classifier_->init(classify::trained_weights()) != Status::kOk) return "classifier weights refused";
+    if (!setup.sea_scenario) {
+      return variant_ + " needs the range-Doppler patches of a seed003-sea scenario (seed003-sea-a, seed003-sea-b)";
+    }
     const scenario::ScenarioSpec& spec = setup.spec;
     MfbpParams<double> p = seed000_default_params<double>();
     p.region = scenario_region(spec);
@@ -53,6 +56,7 @@ class NempAdapter final : public TrackerAdapter {
     set_scenario_noise(spec, p.noise);
     p.amplitude.threshold = spec.threshold;
     p.amplitude.swerling = scenario_swerling(spec);
+    if (setup.sea_scenario) configure_sea_mfbp(setup, p);
     const std::string error = apply_mfbp_params(p, setup.mfbp_params);
     if (!error.empty()) return error;
     if (tracker_->init(p) != Status::kOk) return "MF-BP init failed";
@@ -65,15 +69,16 @@ class NempAdapter final : public TrackerAdapter {
 
   Status step(const scenario::SimScan& scan, std::vector<EstimateOut>& out) override {
     const Status conv = scenario::to_scan(scan, *scan_);
+    // The features were computed once per detection by the scan source
+    // (run/sea_source.h) and are shared by every tracker of the run.
+    if (scan.feature_size != classify::kNumFeatures || scan.features.size() != scan.measurements.size() * kF) {
+      std::fprintf(stderr, "%s: scan %u carries no classifier features (use a seed003-sea scenario)\n",
+                   variant_.c_str(), scan.scan);
+      return Status::kInvalidInput;
+    }
     for (std::size_t j = 0; j < scan_->measurements.size(); ++j) {
-      const float* patch = detection_patch(scan, j);
-      if (patch == nullptr) {
-        std::fprintf(stderr, "%s: scan %u detection %zu carries no range-Doppler patch "
-                             "(use a seed003-sea scenario)\n", variant_.c_str(), scan.scan, j);
-        return Status::kInvalidInput;
-      }
-      const Status s = classifier_->features(patch, evidence_->features[j]);
-      evidence_->has_patch[j] = s == Status::kOk;
+      std::copy_n(scan.features.begin() + static_cast<std::ptrdiff_t>(j * kF), kF, evidence_->features[j].begin());
+      evidence_->has_patch[j] = true;
     }
     Status st = Status::kOk;
     if (variant_ == "nemp") {

@@ -92,16 +92,38 @@ class NempState {
       features_[k][c] = ev != nullptr ? ev->features[j] : classify::Features{};
       log_factor_[k][c] = T(0);
     }
+    // Belief record: input detection j starts at the uninformative 0.5
+    // (detections refused at intake keep it).
+    belief_[k].fill(0.5f);
+    for (std::size_t c = 0; c < s.count; ++c) orig_[k][c] = static_cast<std::uint16_t>(s.orig_index[c]);
   }
 
   /// The window slides by fc scans (MfbpTracker::shift_window).
   void shift(std::size_t fc, std::size_t n) {
+    for (std::size_t k = 0; k < fc && k < n; ++k) {
+      if (finalised_ < kMaxWindow) finalised_belief_[finalised_++] = belief_[k];
+    }
     for (std::size_t k = fc; k < n; ++k) {
       has_[k - fc] = has_[k];
       features_[k - fc] = features_[k];
       log_factor_[k - fc] = log_factor_[k];
+      belief_[k - fc] = belief_[k];
+      orig_[k - fc] = orig_[k];
     }
   }
+
+  /// The tracker's extrinsic P(target-originated) of every detection of the
+  /// scans finalised since clear_finalised(), oldest first, indexed like the
+  /// scan's input measurements: the last p_FG a NEMP round computed before
+  /// the scan left the window, 0.5 for detections without a patch or
+  /// refused at intake. With nn_reliability = 0 the rounds change nothing
+  /// (BetP = p_FG, L = 0), so this records plain MF-BP's association belief:
+  /// the classifier's stage-2 input (seed 003 Sec. III-D;
+  /// docs/algorithms/nemp.md §Belief record). At most kMaxWindow scans are
+  /// kept between clears.
+  std::size_t finalised_scans() const { return finalised_; }
+  float finalised_belief(std::size_t f, std::size_t j) const { return finalised_belief_[f][j]; }
+  void clear_finalised() { finalised_ = 0; }
 
   /// Multiplies the clutter evidence of each detection of scan k by its
   /// NEMP factor (log domain, before bp.run()); factors of 0 are skipped.
@@ -121,6 +143,7 @@ class NempState {
     for (std::size_t j = 0; j < count; ++j) {
       if (!has_[k][j]) continue;
       const T p_fg = extrinsic_target_belief(bp, j, log_factor_[k][j]);
+      belief_[k][orig_[k][j]] = static_cast<float>(p_fg);
       const float w_raw = classifier_->target_probability(features_[k][j], static_cast<float>(p_fg));
       const T w = static_cast<T>(classify::correct_training_prior(w_raw, prior_));
       const T betp = classify::ds_discounted_betp(p_fg, w, params_.nn_reliability);
@@ -152,6 +175,12 @@ class NempState {
   std::array<std::array<bool, kMaxMeas>, kMaxWindow> has_{};
   std::array<std::array<classify::Features, kMaxMeas>, kMaxWindow> features_{};
   std::array<std::array<T, kMaxMeas>, kMaxWindow> log_factor_{};
+  // Belief record (finalised_belief()): per window scan, by input index.
+  static_assert(kMaxMeas <= 65536, "orig_ holds input indices in 16 bits");
+  std::array<std::array<float, kMaxMeas>, kMaxWindow> belief_{};
+  std::array<std::array<std::uint16_t, kMaxMeas>, kMaxWindow> orig_{};
+  std::array<std::array<float, kMaxMeas>, kMaxWindow> finalised_belief_{};
+  std::size_t finalised_ = 0;
 };
 
 }  // namespace mptrack::mfbp

@@ -106,6 +106,15 @@ struct SimScan {
   std::vector<SimMeasurement> measurements;
   std::uint32_t dropped_outside_region = 0;
   bool has_doppler = false;          ///< doppler_mps is filled in (OTHR scenarios)
+  // Seed 003 sea scenes (host-sim/src/run/sea_source.h), empty otherwise: per
+  // measurement j, its range-Doppler patch (patch_size codes 0..255 from
+  // patches[j * patch_size]) and the classifier features computed once per
+  // detection and scan (feature_size floats from features[j * feature_size]),
+  // shared by every tracker of the run.
+  std::size_t patch_size = 0;
+  std::vector<std::uint8_t> patches;
+  std::size_t feature_size = 0;
+  std::vector<float> features;
 };
 
 /// Options applied on top of a spec (Table V rows, clutter sweeps).

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "mptrack/sea/sea_generator.h"
 #include "mptrack/sea/sea_scenario.h"
 #include "mptrack/seaclutter/sea_detector_params.h"
+#include "mptrack/seaclutter/sea_plot.h"
 
 namespace mptrack::sea {
 
@@ -24,6 +26,16 @@ struct LabelRule {
 /// Index of the true target the plot belongs to, or -1 (clutter).
 int label_plot(double range_m, double doppler_bin, const std::vector<SeaTruth>& truth, const LabelRule& rule);
 
+/// The plots of one scene, scan by scan, for a tracker that supplies the
+/// belief column (DatasetConfig::beliefs).
+struct ScenePlots {
+  std::vector<double> time_s;                            ///< CPI centre of each scan [s]
+  std::vector<std::vector<seaclutter::SeaPlot>> plots;   ///< [scan][plot]
+};
+/// Per scan and plot, the tracker's P(target-originated) of the plot.
+using SceneBeliefs = std::vector<std::vector<float>>;
+using BeliefFn = std::function<SceneBeliefs(const SeaScenario& scenario, const ScenePlots& scene)>;
+
 struct DatasetConfig {
   SeaScenario scenario;
   double scr_min_db = -20.0, scr_max_db = 20.0, scr_step_db = 4.0;
@@ -33,6 +45,9 @@ struct DatasetConfig {
   LabelRule label;
   seaclutter::SeaDetectorParams detector;
   std::string out_dir;
+  /// Fills belief.npy (seed 003 Sec. III-D: the MLP's tracker input, from
+  /// MP runs on the training sequences); empty = the 0.5 placeholder.
+  BeliefFn beliefs;
 };
 
 struct DatasetCounts {

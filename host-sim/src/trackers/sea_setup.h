@@ -1,0 +1,48 @@
+// What the MF-BP trackers (mfbp, mfbp-nn, nemp) take from a seed 003 sea
+// scenario (TrackerSetup::sea_scenario; docs/algorithms/sea_clutter.md
+// §Tracking the sea scenes): the staring radar's region and noise, the
+// Doppler span of the map, the paper's visibility chain and detection
+// probability, no amplitude model, and a known uniform clutter rate equal to
+// the plot cap (the detector always fills it at P_FA = 0.28).
+#pragma once
+
+#include "mptrack/mfbp/mfbp_params.h"
+#include "mptrack/sea/sea_scenario.h"
+#include "mptrack/seaclutter/sea_caps.h"
+#include "tracker_adapter.h"
+#include "trackers/core_adapter.h"
+
+namespace mptrack::sim {
+
+/// Overwrites the sea-specific fields of MF-BP's params (after the seed 000
+/// defaults, before --mfbp-param overrides).
+inline void configure_sea_mfbp(const TrackerSetup& setup, MfbpParams<double>& p) {
+  const sea::SeaScenario& s = *setup.sea_scenario;
+  p.region = scenario_region(setup.spec);
+  p.scan_period_s = s.scan_period_s;
+  set_scenario_noise(setup.spec, p.noise);
+  // One Doppler bin of range rate: the centroid of a 4-bin Hann main lobe
+  // is within a bin (docs/algorithms/sea_clutter.md §Detection chain).
+  p.noise.doppler_std_mps = s.doppler_bin_hz() * s.wavelength_m() / 2.0;
+  // The map spans +-PRF/2: range rates within +-(PRF/2) lambda/2 (7.97 m/s).
+  p.doppler_span_mps = s.prf_hz / 2.0 * s.wavelength_m() / 2.0;
+  p.v_max_x_mps = p.doppler_span_mps;
+  p.v_max_y_mps = 1.0;  // the boresight axis: no cross-range motion
+  // Seed 003 Sec. IV: constant velocity in range (sigma_a = 1e-4 m/s^3
+  // moves a target by under a millimetre), a small floor for the filter.
+  p.accel_var_m2ps4 = 1e-6;
+  p.manoeuvre_noise_var_max = 1e-6;
+  // Seed 003 eq. (6) and Sec. III-C: no amplitude likelihood, Pd(1) = 0.9,
+  // Pd(0) = 0.01, visibility transitions 0.85 / 0.15, f_s = 0.5.
+  p.amplitude.use_amplitude = false;
+  p.pd_no_amplitude = 0.9;
+  p.pd_invisible = 0.01;
+  p.p_survive = 0.85;
+  p.p_birth = 0.15;
+  p.visibility_at_birth = 0.5;
+  p.clutter_mode = ClutterMode::kKnownRateUniform;
+  p.uniform_rate_per_scan = static_cast<double>(seaclutter::SeaClutterCaps::kMaxPlots);
+  p.max_gap_s = 4.0 * s.scan_period_s;
+}
+
+}  // namespace mptrack::sim

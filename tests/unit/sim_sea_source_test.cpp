@@ -1,0 +1,127 @@
+// The seed 003 sea scenes in the harness (host-sim/src/run/sea_source.h,
+// sea_runner.h, trackers/sea_beliefs.h): scans carry one patch (and, with
+// the trained classifier, one feature vector) per measurement, --scr sets
+// every target's SCR, and MP, MP-NN and NEMP run end to end on the same
+// measurements. Scenes are shortened to a few scans to keep the test fast.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "mptrack/classify/sea_classifier.h"
+#include "mptrack/classify/trained_weights.h"
+#include "mptrack/seaclutter/sea_caps.h"
+#include "run/sea_source.h"
+#include "sea_runner.h"
+#include "trackers/sea_beliefs.h"
+
+namespace {
+
+mptrack::sea::SeaScenario short_scene(const char* name, double scr_db, std::uint32_t scans) {
+  mptrack::sea::SeaScenario s;
+  REQUIRE(mptrack::sea::builtin_sea_scenario(name, s));
+  s.scr_db = scr_db;
+  s.num_scans = scans;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("sea source: one patch per measurement, truth on the boresight axis, the scenario's SCR") {
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 6.0, 2), 1, false, 0);
+  src.begin_run(0);
+  REQUIRE(src.scans().size() == 2);
+  const auto& s = src.scans()[1];
+  CHECK(s.scan == 2);
+  CHECK(s.time_us == 10256000u);  // scan 2 starts at 10 s; the CPI centre is 256 ms later
+  CHECK(s.has_doppler);
+  REQUIRE(!s.measurements.empty());
+  CHECK(s.measurements.size() <= mptrack::seaclutter::SeaClutterCaps::kMaxPlots);
+  CHECK(s.patch_size == 5u * 512u);
+  CHECK(s.patches.size() == s.measurements.size() * s.patch_size);
+  CHECK(s.features.empty());
+  REQUIRE(s.truth.size() == 4);  // sea state A has 4 targets
+  for (const auto& t : s.truth) {
+    CHECK(t.x.py == 0.0);
+    CHECK(t.snr == doctest::Approx(std::pow(10.0, 0.6)));
+  }
+  for (const auto& m : s.measurements) CHECK(m.azimuth_rad == 0.0);
+}
+
+TEST_CASE("sea source: the same run gives the same scans at a second begin_run") {
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-b", 0.0, 2), 5, false, 0);
+  src.begin_run(3);
+  const auto first = src.scans();
+  src.begin_run(3);
+  REQUIRE(first.size() == src.scans().size());
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    REQUIRE(first[k].measurements.size() == src.scans()[k].measurements.size());
+    CHECK(first[k].patches == src.scans()[k].patches);
+  }
+}
+
+TEST_CASE("sea source: features once per detection, equal to the classifier's on the patch") {
+  if (!mptrack::classify::kHaveTrainedWeights) return;
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 0.0, 1), 1, true, 0);
+  src.begin_run(0);
+  const auto& s = src.scans()[0];
+  REQUIRE(s.feature_size == mptrack::classify::kNumFeatures);
+  REQUIRE(s.features.size() == s.measurements.size() * s.feature_size);
+  auto clf = std::make_unique<mptrack::classify::SeaClassifier>();
+  REQUIRE(clf->init(mptrack::classify::trained_weights()) == mptrack::Status::kOk);
+  std::vector<float> patch(s.patch_size);
+  const std::size_t j = s.measurements.size() - 1;
+  for (std::size_t i = 0; i < s.patch_size; ++i) patch[i] = s.patches[j * s.patch_size + i];
+  mptrack::classify::Features f{};
+  REQUIRE(clf->features(patch.data(), f) == mptrack::Status::kOk);
+  for (std::size_t i = 0; i < f.size(); ++i) CHECK(f[i] == s.features[j * s.feature_size + i]);
+}
+
+TEST_CASE("sea compare: MP, MP-NN and NEMP run on identical measurements") {
+  if (!mptrack::classify::kHaveTrainedWeights) return;
+  mptrack::sim::SeaCompareConfig cfg;
+  cfg.scenario = short_scene("seed003-sea-a", 10.0, 4);
+  cfg.scr_db = {10.0};
+  cfg.runs = 1;
+  cfg.progress = false;
+  const auto r = mptrack::sim::run_sea_compare(cfg);
+  REQUIRE(r.size() == 1);
+  REQUIRE(r[0].size() == 3);
+  for (const auto& row : r[0]) {
+    CHECK(row.base.step_errors == 0);
+    CHECK(row.base.measurement_checksum == r[0][0].base.measurement_checksum);
+    CHECK(row.scr_db == 10.0);
+    CHECK(row.errors.truths == 16);  // 4 targets x 4 scans
+  }
+  CHECK(r[0][0].base.tracker == "mfbp");
+  CHECK(r[0][2].base.tracker == "nemp");
+}
+
+TEST_CASE("MF-BP beliefs of a scene: one per plot, probabilities") {
+  if (!mptrack::sim::sea_beliefs_available()) return;
+  mptrack::sea::ScenePlots scene;
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 10.0, 4), 1, false, 0);
+  src.begin_run(0);
+  for (const auto& s : src.scans()) {
+    scene.time_s.push_back(static_cast<double>(s.time_us) * 1e-6);
+    scene.plots.emplace_back();
+    for (const auto& m : s.measurements) {
+      mptrack::seaclutter::SeaPlot p;
+      p.range_m = static_cast<float>(m.range_m);
+      p.range_rate_mps = static_cast<float>(m.doppler_mps);
+      p.amplitude = static_cast<float>(m.amplitude);
+      scene.plots.back().push_back(p);
+    }
+  }
+  const auto b = mptrack::sim::mfbp_scene_beliefs(src.sea_scenario(), scene);
+  REQUIRE(b.size() == scene.plots.size());
+  bool informative = false;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    REQUIRE(b[k].size() == scene.plots[k].size());
+    for (float x : b[k]) {
+      CHECK(x >= 0.0f);
+      CHECK(x <= 1.0f);
+      informative = informative || x != 0.5f;
+    }
+  }
+  CHECK(informative);  // MF-BP associated something: not the placeholder everywhere
+}
