@@ -10,7 +10,9 @@
 // (FFT beamformer, power map [d][a][g]) -> detection: every cell inside the
 // range gate and the angle span that is a local maximum of the map (3x3x3
 // neighbourhood; Doppler wraps; ties go to the lower cell index) and passes
-// the CFAR test along range becomes a candidate; the strongest
+// the CFAR test along range becomes a candidate (found threshold first: a
+// constant-cost screen per line, cfar_screen.h, then the local-maximum and
+// exact CFAR tests on the cells it keeps); the strongest
 // min(max_detections, Caps::kMaxDetections, N) are kept (the rest counted)
 // and refined: angle by the steering-vector matched filter, range and
 // Doppler by a parabola through the log powers of the bin and its two
@@ -32,6 +34,7 @@
 
 #include "mptrack/frontend/angle_processor.h"
 #include "mptrack/frontend/cfar.h"
+#include "mptrack/frontend/cfar_screen.h"
 #include "mptrack/frontend/doppler_processor.h"
 #include "mptrack/frontend/frontend_params.h"
 #include "mptrack/frontend/measurement_convert.h"
@@ -61,7 +64,8 @@ struct FrontEndStageTimes {
 struct FrontEndCounters {
   std::uint64_t frames = 0;               ///< frames processed successfully
   std::uint64_t frames_rejected = 0;      ///< frames refused (not initialised, NaN/Inf input)
-  std::uint64_t cells_tested = 0;         ///< CFAR tests run (local maxima in gate and span)
+  std::uint64_t cells_tested = 0;         ///< exact CFAR tests run: local maxima in gate and
+                                          ///< span among the cells the threshold screen kept
   std::uint64_t detections = 0;           ///< measurements emitted
   std::uint64_t detections_over_cap = 0;  ///< CFAR detections dropped by the per-frame cap
   std::uint64_t frames_over_ceiling = 0;  ///< float frames refused: a sample beyond max_abs_sample
@@ -284,7 +288,12 @@ class FrontEnd {
       for (std::size_t a = 0; a < kNa; ++a) {
         if (!ang_.angle_tested(a)) continue;
         const float* line = ang_.power_map() + AngleProcessor<Caps>::map_index(0, d, a);
-        for (std::size_t g = gate_lo_; g < gate_hi_; ++g) {
+        // Threshold first: the screen keeps a superset of the cells CFAR
+        // detects (cfar_screen.h), so the local-maximum and exact CFAR tests
+        // below run on few cells and decide exactly as over every cell.
+        const std::size_t kept = screen_.run(cfar_, line, gate_lo_, gate_hi_);
+        for (std::size_t j = 0; j < kept; ++j) {
+          const std::size_t g = screen_.cells()[j];
           const float p = line[g];
           if (!(p > 0.0f) || !is_local_max(g, d, a, p)) continue;
           const CfarResult r = cfar_.test(line, kNumRangeBins, g);
@@ -371,6 +380,7 @@ class FrontEnd {
   DopplerProcessor<Caps> dop_{};
   AngleProcessor<Caps> ang_{};
   Cfar cfar_{};
+  CfarScreen<kNumRangeBins> screen_{};
   PeakList<Caps::kMaxDetections> peaks_{};
   FrontEndCounters counters_{};
   double range_bin_m_ = 0.0;
