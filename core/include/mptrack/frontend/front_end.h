@@ -13,8 +13,10 @@
 // the CFAR test along range becomes a candidate (found threshold first: a
 // constant-cost screen per line, cfar_screen.h, then the local-maximum and
 // exact CFAR tests on the cells it keeps); the strongest
-// min(max_detections, Caps::kMaxDetections, N) are kept (the rest counted)
-// and refined: angle by the steering-vector matched filter, range and
+// min(max_detections, Caps::kMaxDetections, N) are kept (the rest counted),
+// those a stronger candidate's range or angle sidelobes explain are dropped
+// (sidelobe_filter.h; FrontEndParams::sidelobe_grouping, counted), the rest
+// refined: angle by the steering-vector matched filter, range and
 // Doppler by a parabola through the log powers of the bin and its two
 // neighbours (offset clamped to +-0.5 bin; none at the map edge).
 //
@@ -42,6 +44,7 @@
 #include "mptrack/frontend/radar_caps.h"
 #include "mptrack/frontend/radar_cube.h"
 #include "mptrack/frontend/range_matched_filter.h"
+#include "mptrack/frontend/sidelobe_filter.h"
 #include "mptrack/math/detmath.h"
 #include "mptrack/measurement.h"
 #include "mptrack/profile.h"
@@ -75,6 +78,8 @@ struct FrontEndCounters {
   std::uint64_t frames_saturated = 0;     ///< int16 frames with more than saturation_fraction of
                                           ///< samples at full scale (processed, kPartial)
   std::uint64_t detections_nonfinite = 0; ///< detections dropped: amplitude not finite (F3)
+  std::uint64_t detections_sidelobe = 0;  ///< candidates dropped as a stronger candidate's range
+                                          ///< or angle sidelobe (sidelobe_filter.h)
 };
 
 template <class Caps>
@@ -114,6 +119,7 @@ class FrontEnd {
     MPTRACK_TRY(dop_.init(p));
     MPTRACK_TRY(ang_.init(p));
     MPTRACK_TRY(cfar_.init(p.cfar));
+    MPTRACK_TRY(sidelobe_.init(p));
     range_bin_m_ = frontend::range_bin_m(p);
     std::size_t g_lo = 0;
     std::size_t g_hi = 0;
@@ -314,6 +320,7 @@ class FrontEnd {
     }
     last_dropped_ = peaks_.dropped();
     counters_.detections_over_cap += last_dropped_;
+    counters_.detections_sidelobe += sidelobe_.apply(peaks_, keep_);
   }
 
   /// Sub-bin offset of a peak from the powers of the bin and its two
@@ -340,6 +347,7 @@ class FrontEnd {
   std::size_t emit(Scan<float, N>& out) {
     std::size_t nonfinite = 0;
     for (std::size_t i = 0; i < peaks_.size(); ++i) {
+      if (!keep_[i]) continue;  // a stronger candidate's sidelobe
       const PeakCandidate& c = peaks_[i];
       const std::size_t g = c.range_bin;
       const std::size_t d = c.doppler_bin;
@@ -382,6 +390,8 @@ class FrontEnd {
   Cfar cfar_{};
   CfarScreen<kNumRangeBins> screen_{};
   PeakList<Caps::kMaxDetections> peaks_{};
+  SidelobeFilter<Caps> sidelobe_{};
+  std::array<bool, Caps::kMaxDetections> keep_{};  ///< peaks_[i] survives sidelobe grouping
   FrontEndCounters counters_{};
   double range_bin_m_ = 0.0;
   std::size_t gate_lo_ = 0;
