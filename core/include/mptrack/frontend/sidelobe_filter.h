@@ -15,7 +15,8 @@
 //     (angle_processor.h; periodic in N_A).
 // init() tabulates the envelope E[k] = the largest ratio, over sub-bin
 // offsets delta = 0, 1/8, .., 7/8, of the response k bins from the sampled
-// peak to the sampled peak itself, made non-increasing in k (an envelope, not
+// peak beyond the main lobe's first null to the sampled peak itself, made
+// non-increasing in k (an envelope, not
 // a pattern with nulls that move with delta). A point target's map response
 // is the product of its range, angle and Doppler responses (the stages are
 // separable), so candidate c is dropped if a kept, stronger candidate s
@@ -122,13 +123,21 @@ class SidelobeFilter {
     return c.power < bound;
   }
 
-  /// Largest over sub-bin offsets of response(k bins from the sampled peak)
-  /// / response(sampled peak), for k = 0..kmax; resp(x) is the power
-  /// response at offset x bins from the true peak. Then non-increasing in k.
+  /// Sidelobe envelope: the largest over sub-bin offsets of
+  /// response(k bins from the sampled peak) / response(sampled peak) for k
+  /// beyond the main lobe's first null on that side (inside the main lobe
+  /// the response falls monotonically and makes no local maximum, so a
+  /// candidate there is another target or noise, not a sidelobe); then
+  /// non-increasing in k, so inside the main lobe E is the peak sidelobe
+  /// level beyond it. resp(x) is the power response x bins from the true peak.
   template <std::size_t K, class Resp>
   static void envelope(std::array<float, K>& env, const Resp& resp) {
     constexpr std::size_t kmax = K - 1;
     std::array<double, K> best{};
+    // First null either side of the true peak: walk out in 1/16-bin steps
+    // until the continuous response rises again.
+    const double null_lo = first_null(resp, -1.0, static_cast<double>(kmax) + 1.0);
+    const double null_hi = first_null(resp, 1.0, static_cast<double>(kmax) + 1.0);
     for (std::size_t s = 0; s < kSubBins; ++s) {
       const double delta = static_cast<double>(s) / static_cast<double>(kSubBins);
       // Sampled peak: bin 0 (offset -delta) or bin 1 (offset 1 - delta).
@@ -139,19 +148,39 @@ class SidelobeFilter {
       if (!(peak > 0.0)) continue;
       for (std::size_t k = 1; k <= kmax; ++k) {
         const double kk = static_cast<double>(k);
-        const double lo = resp(centre - kk - delta);
-        const double hi = resp(centre + kk - delta);
-        const double r = (lo > hi ? lo : hi) / peak;
+        const double lo = centre - kk - delta;  // offsets from the true peak [bins]
+        const double hi = centre + kk - delta;
+        double r = 0.0;
+        if (-lo >= null_lo) r = resp(lo);
+        if (hi >= null_hi) {
+          const double v = resp(hi);
+          r = v > r ? v : r;
+        }
+        r = r / peak;
         if (r > best[k]) best[k] = r;
       }
     }
-    best[0] = 1.0;
-    if (kmax >= 1) best[1] = 1.0;  // adjacent bins: inside the 3x3x3 local-maximum test anyway
     double run = 0.0;  // running maximum from the far end
     for (std::size_t k = kmax + 1; k-- > 0;) {
       if (best[k] > run) run = best[k];
       env[k] = static_cast<float>(run);
     }
+    env[0] = 1.0f;
+    if (kmax >= 1) env[1] = 1.0f;  // adjacent bins: inside the 3x3x3 local-maximum test anyway
+  }
+
+  /// Distance [bins] from the true peak to the first null in direction dir
+  /// (+-1), or `limit` if the response keeps falling that far.
+  template <class Resp>
+  static double first_null(const Resp& resp, double dir, double limit) {
+    constexpr double kStep = 1.0 / 16.0;
+    double prev = resp(0.0);
+    for (double x = kStep; x <= limit; x += kStep) {
+      const double v = resp(dir * x);
+      if (v > prev) return x - kStep;
+      prev = v;
+    }
+    return limit;
   }
 
   void range_envelope(const FrontEndParams& p, std::size_t len) {
