@@ -23,23 +23,33 @@
 namespace mptrack::bench {
 namespace {
 
-void bm_cfar(benchmark::State& state, bool line_mode, frontend::CfarType type) {
-  const auto cells = static_cast<std::size_t>(state.range(0));
-  const auto train = static_cast<std::size_t>(state.range(1));
+// Detector of `type` with guard 2 and T = state.range(1), pfa 1e-4; false
+// (benchmark skipped) if init fails.
+bool make_cfar(benchmark::State& state, frontend::CfarType type, frontend::Cfar& cfar) {
   frontend::CfarParams p;
   p.type = type;
   p.pfa = 1e-4;
   p.guard_cells = 2;
-  p.training_cells = train;
-  frontend::Cfar cfar;
-  if (cfar.init(p) != Status::kOk) {
-    state.SkipWithError("cfar init failed");
-    return;
-  }
+  p.training_cells = static_cast<std::size_t>(state.range(1));
+  if (cfar.init(p) == Status::kOk) return true;
+  state.SkipWithError("cfar init failed");
+  return false;
+}
+
+/// Unit exponential noise (the power of complex Gaussian noise).
+std::vector<float> noise_line(std::size_t cells) {
   std::mt19937_64 rng(16);
   std::exponential_distribution<float> expo(1.0f);
   std::vector<float> line(cells);
   for (float& x : line) x = expo(rng);
+  return line;
+}
+
+void bm_cfar(benchmark::State& state, bool line_mode, frontend::CfarType type) {
+  const auto cells = static_cast<std::size_t>(state.range(0));
+  frontend::Cfar cfar;
+  if (!make_cfar(state, type, cfar)) return;
+  const std::vector<float> line = noise_line(cells);
   std::vector<frontend::CfarResult> out(cells);
   for (auto _ : state) {
     if (line_mode) {
@@ -56,19 +66,9 @@ void bm_cfar(benchmark::State& state, bool line_mode, frontend::CfarType type) {
 
 template <std::size_t kCells>
 void bm_cfar_screen(benchmark::State& state) {
-  frontend::CfarParams p;
-  p.pfa = 1e-4;
-  p.guard_cells = 2;
-  p.training_cells = static_cast<std::size_t>(state.range(1));
   frontend::Cfar cfar;
-  if (cfar.init(p) != Status::kOk) {
-    state.SkipWithError("cfar init failed");
-    return;
-  }
-  std::mt19937_64 rng(16);
-  std::exponential_distribution<float> expo(1.0f);
-  std::vector<float> line(kCells);
-  for (float& x : line) x = expo(rng);
+  if (!make_cfar(state, frontend::CfarType::kCellAveraging, cfar)) return;
+  const std::vector<float> line = noise_line(kCells);
   auto screen = std::make_unique<frontend::CfarScreen<kCells>>();
   for (auto _ : state) {
     benchmark::DoNotOptimize(screen->run(cfar, line.data(), 0, kCells));

@@ -35,7 +35,6 @@
 #pragma once
 
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -81,15 +80,16 @@ class CfarScreen {
     float max_value = 0.0f;
     std::memcpy(&max_value, &bmax, sizeof max_value);
     if (!(max_value >= 0x1p-60f && max_value <= 0x1p60f)) return keep_all(lo, hi);
-    int e = 0;
-    (void)std::frexp(max_value, &e);  // max = m 2^e, m in [0.5, 1)
+    // max = m 2^e, m in [0.5, 1), from the (normal) bit pattern: no libm
+    // call (nor its first-call symbol binding, which the stack test sees).
+    const int e = static_cast<int>((static_cast<std::uint32_t>(bmax) >> 23) & 0xffu) - 126;
     const bool so = p.type == CfarType::kSmallestOf;
     const double n = static_cast<double>(so ? p.training_cells : 2 * p.training_cells);
     // Factor on W: alpha/n (1 - margin) 2^-s; normal float or no screen.
-    const double kd = static_cast<double>(cfar.alpha_f()) / n * (1.0 - kMargin) * std::ldexp(1.0, e - kQuantBits);
+    const double kd = static_cast<double>(cfar.alpha_f()) / n * (1.0 - kMargin) * pow2(e - kQuantBits);
     if (!(kd >= static_cast<double>(kFloatMin) && kd <= static_cast<double>(kFloatMax))) return keep_all(lo, hi);
     const float k = static_cast<float>(kd);
-    const float scale = std::ldexp(1.0f, kQuantBits - e);  // exact power of two
+    const float scale = static_cast<float>(pow2(kQuantBits - e));  // exact power of two, normal
     // Quantise (vectorises), then the running sum (one add per cell).
     for (std::size_t i = 0; i < kLen; ++i) {
       prefix_[i + 1] = static_cast<std::uint32_t>(static_cast<std::int32_t>(line[i] * scale));
@@ -120,6 +120,14 @@ class CfarScreen {
   static constexpr float kFloatMax = std::numeric_limits<float>::max();
   static constexpr float kFloatMin = std::numeric_limits<float>::min();  ///< smallest normal
   static constexpr std::int32_t kInfBits = 0x7f800000;                   ///< bit pattern of +Inf
+
+  /// 2^k as a double, exact, for |k| <= 1000 (here |k| <= 90).
+  static double pow2(int k) {
+    const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
+    double x = 0.0;
+    std::memcpy(&x, &bits, sizeof x);
+    return x;
+  }
 
   std::size_t keep_all(std::size_t lo, std::size_t hi) {
     for (std::size_t i = lo; i < hi; ++i) cells_[count_++] = static_cast<std::uint16_t>(i);
