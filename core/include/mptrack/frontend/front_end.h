@@ -10,9 +10,13 @@
 // (FFT beamformer, power map [d][a][g]) -> detection: every cell inside the
 // range gate and the angle span that is a local maximum of the map (3x3x3
 // neighbourhood; Doppler wraps; ties go to the lower cell index) and passes
-// the CFAR test along range becomes a candidate; the strongest
-// min(max_detections, Caps::kMaxDetections, N) are kept (the rest counted)
-// and refined: angle by the steering-vector matched filter, range and
+// the CFAR test along range becomes a candidate (found threshold first: a
+// constant-cost screen per line, cfar_screen.h, then the local-maximum and
+// exact CFAR tests on the cells it keeps); the strongest
+// min(max_detections, Caps::kMaxDetections, N) are kept (the rest counted),
+// those a stronger candidate's range or angle sidelobes explain are dropped
+// (sidelobe_filter.h; FrontEndParams::sidelobe_grouping, counted), the rest
+// refined: angle by the steering-vector matched filter, range and
 // Doppler by a parabola through the log powers of the bin and its two
 // neighbours (offset clamped to +-0.5 bin; none at the map edge).
 //
@@ -32,6 +36,7 @@
 
 #include "mptrack/frontend/angle_processor.h"
 #include "mptrack/frontend/cfar.h"
+#include "mptrack/frontend/cfar_screen.h"
 #include "mptrack/frontend/doppler_processor.h"
 #include "mptrack/frontend/frontend_params.h"
 #include "mptrack/frontend/measurement_convert.h"
@@ -39,6 +44,7 @@
 #include "mptrack/frontend/radar_caps.h"
 #include "mptrack/frontend/radar_cube.h"
 #include "mptrack/frontend/range_matched_filter.h"
+#include "mptrack/frontend/sidelobe_filter.h"
 #include "mptrack/math/detmath.h"
 #include "mptrack/measurement.h"
 #include "mptrack/profile.h"
@@ -61,7 +67,8 @@ struct FrontEndStageTimes {
 struct FrontEndCounters {
   std::uint64_t frames = 0;               ///< frames processed successfully
   std::uint64_t frames_rejected = 0;      ///< frames refused (not initialised, NaN/Inf input)
-  std::uint64_t cells_tested = 0;         ///< CFAR tests run (local maxima in gate and span)
+  std::uint64_t cells_tested = 0;         ///< exact CFAR tests run: local maxima in gate and
+                                          ///< span among the cells the threshold screen kept
   std::uint64_t detections = 0;           ///< measurements emitted
   std::uint64_t detections_over_cap = 0;  ///< CFAR detections dropped by the per-frame cap
   std::uint64_t frames_over_ceiling = 0;  ///< float frames refused: a sample beyond max_abs_sample
@@ -71,6 +78,8 @@ struct FrontEndCounters {
   std::uint64_t frames_saturated = 0;     ///< int16 frames with more than saturation_fraction of
                                           ///< samples at full scale (processed, kPartial)
   std::uint64_t detections_nonfinite = 0; ///< detections dropped: amplitude not finite (F3)
+  std::uint64_t detections_sidelobe = 0;  ///< candidates dropped as a stronger candidate's range
+                                          ///< or angle sidelobe (sidelobe_filter.h)
 };
 
 template <class Caps>
@@ -110,6 +119,7 @@ class FrontEnd {
     MPTRACK_TRY(dop_.init(p));
     MPTRACK_TRY(ang_.init(p));
     MPTRACK_TRY(cfar_.init(p.cfar));
+    MPTRACK_TRY(sidelobe_.init(p));
     range_bin_m_ = frontend::range_bin_m(p);
     std::size_t g_lo = 0;
     std::size_t g_hi = 0;
@@ -286,7 +296,12 @@ class FrontEnd {
       for (std::size_t a = 0; a < kNa; ++a) {
         if (!ang_.angle_tested(a)) continue;
         const float* line = ang_.power_map() + AngleProcessor<Caps>::map_index(0, d, a);
-        for (std::size_t g = gate_lo_; g < gate_hi_; ++g) {
+        // Threshold first: the screen keeps a superset of the cells CFAR
+        // detects (cfar_screen.h), so the local-maximum and exact CFAR tests
+        // below run on few cells and decide exactly as over every cell.
+        const std::size_t kept = screen_.run(cfar_, line, gate_lo_, gate_hi_);
+        for (std::size_t j = 0; j < kept; ++j) {
+          const std::size_t g = screen_.cells()[j];
           const float p = line[g];
           if (!(p > 0.0f) || !is_local_max(g, d, a, p)) continue;
           const CfarResult r = cfar_.test(line, kNumRangeBins, g);
@@ -307,6 +322,7 @@ class FrontEnd {
     }
     last_dropped_ = peaks_.dropped();
     counters_.detections_over_cap += last_dropped_;
+    counters_.detections_sidelobe += sidelobe_.apply(peaks_, keep_);
   }
 
   /// Sub-bin offset of a peak from the powers of the bin and its two
@@ -333,6 +349,7 @@ class FrontEnd {
   std::size_t emit(Scan<float, N>& out) {
     std::size_t nonfinite = 0;
     for (std::size_t i = 0; i < peaks_.size(); ++i) {
+      if (!keep_[i]) continue;  // a stronger candidate's sidelobe
       const PeakCandidate& c = peaks_[i];
       const std::size_t g = c.range_bin;
       const std::size_t d = c.doppler_bin;
@@ -373,7 +390,10 @@ class FrontEnd {
   DopplerProcessor<Caps> dop_{};
   AngleProcessor<Caps> ang_{};
   Cfar cfar_{};
+  CfarScreen<kNumRangeBins> screen_{};
   PeakList<Caps::kMaxDetections> peaks_{};
+  SidelobeFilter<Caps> sidelobe_{};
+  std::array<bool, Caps::kMaxDetections> keep_{};  ///< peaks_[i] survives sidelobe grouping
   FrontEndCounters counters_{};
   double range_bin_m_ = 0.0;
   std::size_t gate_lo_ = 0;

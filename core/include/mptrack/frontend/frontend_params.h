@@ -94,6 +94,10 @@ struct FrontEndParams {
                                        ///< capacity also caps it)
   double min_noise_power = 1e-30;      ///< floor on the CFAR noise estimate [map power units],
                                        ///< keeps amplitudes finite on noiseless data; >= 0
+  bool sidelobe_grouping = true;       ///< drop a candidate that a stronger one's range or angle
+                                       ///< sidelobes explain (sidelobe_filter.h)
+  double sidelobe_margin_db = 3.0;     ///< margin over the sidelobe envelope for the noise on a
+                                       ///< sidelobe [dB], in [0, 30]
   std::size_t angle_refine_iterations = 24;  ///< golden-section steps of the steering-vector MF,
                                              ///< 0 = grid angle only, <= 64
   // Frame-level input checks (docs/reliability.md F2 and "ADC frames").
@@ -128,6 +132,7 @@ struct FrontEndParams {
     MPTRACK_TRY(cfar.validate(where));
     MPTRACK_CHECK_PARAM(where, "max_detections", check_at_least(max_detections, 1));
     MPTRACK_CHECK_PARAM(where, "min_noise_power", check_range(min_noise_power, 0.0, 1e30));
+    MPTRACK_CHECK_PARAM(where, "sidelobe_margin_db", check_range(sidelobe_margin_db, 0.0, 30.0));
     MPTRACK_CHECK_PARAM(where, "angle_refine_iterations", check_at_most(angle_refine_iterations, 64));
     MPTRACK_CHECK_PARAM(where, "max_abs_sample", check_range(max_abs_sample, 1e-6, 1e9));
     MPTRACK_CHECK_PARAM(where, "saturation_fraction", check_range(saturation_fraction, 0.0, 1.0));

@@ -35,6 +35,15 @@ class ReferenceChirp {
     dmath::dsincos(dmath::kPi<double> * kappa_ * t * t, im, re);
   }
 
+  /// The continuous chirp at a fractional sample position x (sidelobe
+  /// envelopes, sidelobe_filter.h); equals sample(i) at x = i.
+  void sample_at(double x, double& re, double& im) const {
+    const double t = (x - centre_) / fs_;
+    im = 0.0;
+    re = 1.0;
+    dmath::dsincos(dmath::kPi<double> * kappa_ * t * t, im, re);
+  }
+
  private:
   double kappa_;   ///< chirp rate BW / T_Tx [Hz/s]
   double centre_;  ///< (L - 1) / 2 [samples]

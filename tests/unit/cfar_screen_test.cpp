@@ -1,0 +1,159 @@
+// CfarScreen: the cells it keeps are a superset of the cells Cfar::test()
+// detects (checked against Cfar::test() at every cell), and on noise it
+// keeps little more than those.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "alloc_guard.h"
+#include "mptrack/frontend/cfar_screen.h"
+
+namespace fe = mptrack::frontend;
+using mptrack::Status;
+
+namespace {
+
+constexpr std::size_t kLen = 300;
+using Screen = fe::CfarScreen<kLen>;
+
+fe::Cfar make(fe::CfarType type, fe::CfarEdge edge, std::size_t guard = 2, std::size_t train = 8,
+              double pfa = 1e-3) {
+  fe::CfarParams p;
+  p.type = type;
+  p.edge = edge;
+  p.pfa = pfa;
+  p.guard_cells = guard;
+  p.training_cells = train;
+  fe::Cfar c;
+  REQUIRE(c.init(p) == Status::kOk);
+  return c;
+}
+
+// Exponential noise, two strong cells (one 1e7 above the noise, so the
+// quantisation of the noise is coarse around it) and a weak pair.
+std::vector<float> noisy_line(unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::exponential_distribution<float> expo(1.0f);
+  std::vector<float> line(kLen);
+  for (float& x : line) x = expo(rng);
+  line[kLen / 3] = 1e7f;
+  line[kLen / 3 + 6] = 3e4f;
+  line[2 * kLen / 3] = 40.0f;
+  line[2 * kLen / 3 + 2] = 25.0f;
+  return line;
+}
+
+// Returns true if every cell in [lo, hi) that Cfar::test() detects is kept,
+// the kept cells ascend and lie in [lo, hi).
+bool keeps_every_detection(const fe::Cfar& cfar, Screen& screen, const std::vector<float>& line,
+                           std::size_t lo, std::size_t hi) {
+  const std::size_t kept = screen.run(cfar, line.data(), lo, hi);
+  std::vector<bool> is_kept(kLen, false);
+  for (std::size_t j = 0; j < kept; ++j) {
+    const std::size_t g = screen.cells()[j];
+    if (g < lo || g >= hi || (j > 0 && screen.cells()[j - 1] >= g)) return false;
+    is_kept[g] = true;
+  }
+  for (std::size_t i = lo; i < hi; ++i) {
+    if (cfar.test(line.data(), kLen, i).detected && !is_kept[i]) return false;
+  }
+  return true;
+}
+
+constexpr fe::CfarEdge kEdges[] = {fe::CfarEdge::kSkip, fe::CfarEdge::kShift, fe::CfarEdge::kWrap};
+constexpr fe::CfarType kSumTypes[] = {fe::CfarType::kCellAveraging, fe::CfarType::kGreatestOf,
+                                      fe::CfarType::kSmallestOf};
+
+}  // namespace
+
+TEST_CASE("CfarScreen keeps every cell Cfar::test detects (CA, GO, SO; every edge policy)") {
+  auto screen = std::make_unique<Screen>();
+  for (fe::CfarType type : kSumTypes) {
+    for (fe::CfarEdge edge : kEdges) {
+      for (std::size_t train : {std::size_t{1}, std::size_t{8}, std::size_t{64}}) {
+        const fe::Cfar cfar = make(type, edge, 2, train);
+        for (unsigned seed = 0; seed < 4; ++seed) {
+          const std::vector<float> line = noisy_line(seed + 10 * static_cast<unsigned>(train));
+          REQUIRE(keeps_every_detection(cfar, *screen, line, 0, kLen));
+          REQUIRE(keeps_every_detection(cfar, *screen, line, 5, kLen - 40));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("CfarScreen keeps a cell one float step over the exact threshold") {
+  // Each cell in turn is set to the smallest float Cfar::test() detects
+  // there: the screen's margin must cover the float rounding of the test.
+  auto screen = std::make_unique<Screen>();
+  for (fe::CfarType type : kSumTypes) {
+    const fe::Cfar cfar = make(type, fe::CfarEdge::kShift, 1, 16);
+    std::vector<float> line = noisy_line(3);
+    for (std::size_t i = 0; i < kLen; i += 7) {
+      const float saved = line[i];
+      const fe::CfarResult r = cfar.test(line.data(), kLen, i);
+      line[i] = std::nextafter(cfar.alpha_f() * r.noise, std::numeric_limits<float>::infinity());
+      REQUIRE(cfar.test(line.data(), kLen, i).detected);
+      REQUIRE(keeps_every_detection(cfar, *screen, line, 0, kLen));
+      line[i] = saved;
+    }
+  }
+}
+
+TEST_CASE("CfarScreen on noise keeps about the cells CFAR detects, not the whole line") {
+  auto screen = std::make_unique<Screen>();
+  const fe::Cfar cfar = make(fe::CfarType::kCellAveraging, fe::CfarEdge::kShift, 2, 8, 1e-2);
+  std::mt19937_64 rng(5);
+  std::exponential_distribution<float> expo(1.0f);
+  std::vector<float> line(kLen);
+  std::size_t kept = 0;
+  std::size_t detected = 0;
+  for (int rep = 0; rep < 20; ++rep) {
+    for (float& x : line) x = expo(rng);
+    kept += screen->run(cfar, line.data(), 0, kLen);
+    for (std::size_t i = 0; i < kLen; ++i) detected += cfar.test(line.data(), kLen, i).detected ? 1u : 0u;
+  }
+  // 6000 cells at Pfa 1e-2: about 60 detections; the 2^-12 margin and the
+  // quantisation (2^-20 of a cell near the line's maximum) add almost none.
+  CHECK(detected >= 20);
+  CHECK(kept >= detected);
+  CHECK(kept <= detected + 3);
+}
+
+TEST_CASE("CfarScreen keeps every cell for OS and for lines it cannot bound") {
+  auto screen = std::make_unique<Screen>();
+  const fe::Cfar os = make(fe::CfarType::kOrderedStatistic, fe::CfarEdge::kShift);
+  std::vector<float> line = noisy_line(1);
+  CHECK(screen->run(os, line.data(), 10, 200) == 190);
+  CHECK(screen->cells()[0] == 10);
+  const fe::Cfar ca = make(fe::CfarType::kCellAveraging, fe::CfarEdge::kShift);
+  line[50] = std::nanf("");
+  CHECK(screen->run(ca, line.data(), 0, kLen) == kLen);
+  line[50] = -1.0f;
+  CHECK(screen->run(ca, line.data(), 0, kLen) == kLen);
+  line[50] = 1.0f;
+  line[60] = 0x1p61f;  // beyond the quantisation range
+  CHECK(screen->run(ca, line.data(), 0, kLen) == kLen);
+}
+
+TEST_CASE("CfarScreen keeps no cell of an all-zero line") {
+  auto screen = std::make_unique<Screen>();
+  const fe::Cfar ca = make(fe::CfarType::kCellAveraging, fe::CfarEdge::kShift);
+  const std::vector<float> line(kLen, 0.0f);
+  CHECK(screen->run(ca, line.data(), 0, kLen) == 0);
+}
+
+TEST_CASE("CfarScreen does not allocate") {
+  auto screen = std::make_unique<Screen>();
+  const fe::Cfar ca = make(fe::CfarType::kSmallestOf, fe::CfarEdge::kWrap);
+  const std::vector<float> line = noisy_line(2);
+  mptrack::test::NoAllocScope guard;
+  const std::size_t kept = screen->run(ca, line.data(), 0, kLen);
+  CHECK(guard.allocations() == 0);
+  CHECK(kept >= 1);
+}
