@@ -200,7 +200,9 @@ class CbMemberFilter : public rfs::GmFilterFrame<CbMemberFilter<T, Caps>, T, Cap
     Track u;
     u.r = r_u < kMaxExistence ? r_u : kMaxExistence;
     u.label = pred_[m.best].label;
-    counters_.track_cap_hits +=
+    // Truncation to kMaxComponentsPerBernoulli: the J_max step of the
+    // reduction (mixture.h), counted, not a capacity error.
+    counters_.mixture_truncated +=
         rfs::reduce_mixture(raw_, u.comps, reduction_, raw_scratch_, counters_.numerical_repairs);
     renormalize(u);
     push_track(u);
