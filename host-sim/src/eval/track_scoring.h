@@ -9,6 +9,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "mptrack/scenario/generator.h"
@@ -26,6 +28,11 @@ struct TrackScoringParams {
 /// from 1.
 TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, double ospa_cutoff_m);
 
+/// Scans after a target's birth that the settled coverage does not judge
+/// (the confirmation delay the issue-18 criterion allows): coverage from
+/// birth + 5 on (docs/algorithms/metrics.md §Track scores).
+inline constexpr std::uint32_t kSettleScans = 5;
+
 /// One target over one run.
 struct TargetScore {
   std::uint32_t target_id = 0;
@@ -36,6 +43,8 @@ struct TargetScore {
   std::uint32_t id_switches = 0;     ///< its assigned track id changed (from the last one it had)
   std::uint32_t fragmentations = 0;  ///< coverage resumed after an interruption
   std::uint32_t track_breaks = 0;    ///< id changed and the previous track no longer existed
+  std::uint32_t settled_scans = 0;   ///< alive scans from birth_scan + kSettleScans on
+  std::uint32_t settled_covered_scans = 0;  ///< of those, the scans covered_scans counts
   double abs_range_err_sum_m = 0.0;      ///< sum over covered scans of |ground range error| [m]
   double abs_bearing_err_sum_rad = 0.0;  ///< sum over covered scans of |bearing error| [rad]
 };
@@ -66,6 +75,11 @@ struct TrackScoreTotals {
   std::uint64_t valid_tracks = 0, false_tracks = 0, targets_with_valid_track = 0;
   std::uint64_t id_switches = 0, fragmentations = 0, track_breaks = 0;
   double abs_range_err_sum_m = 0.0, abs_bearing_err_sum_rad = 0.0;
+  /// Settled coverage (kSettleScans): pooled scans, the worst (run, target)
+  /// fraction, and per target id the pooled scans over runs.
+  std::uint64_t settled_scans = 0, settled_covered_scans = 0;
+  double min_settled_coverage = 1.0;  ///< over (run, target) pairs alive past the settle scans
+  std::map<std::uint32_t, std::pair<std::uint64_t, std::uint64_t>> settled_by_target;  ///< id -> (covered, scans)
 
   void add(const RunTrackScore& run);
   double nvt() const;                ///< targets with a valid track, mean per run
@@ -75,6 +89,8 @@ struct TrackScoreTotals {
   double aee_range_m() const;        ///< mean |ground range error| over covered target-scans [m]
   double aee_bearing_rad() const;    ///< mean |bearing error| over covered target-scans [rad]
   double per_target(std::uint64_t count) const;  ///< count / targets (0 if none)
+  double settled_coverage() const;   ///< settled covered / settled alive target-scans (pooled)
+  double settled_coverage_of(std::uint32_t target_id) const;  ///< the same for one target id over runs
 };
 
 }  // namespace mptrack::sim
