@@ -186,3 +186,26 @@ TEST_CASE("GM-PHD truncation to kMaxMixtureComponents is counted, not a capacity
   }
   CHECK(f->counters().track_cap_hits == 0);
 }
+
+TEST_CASE("GM-PHD truncation that leaves out a target-weight component is a capacity error") {
+  // Three well-separated targets, no clutter, J_max 2: once each target's
+  // component weighs about 1, the truncation must leave one of them out
+  // (weight >= extract_threshold 0.5): counted in mixture_truncated AND in
+  // track_cap_hits, and the step returns kCapacityExceeded.
+  const phdtest::Truth three[3] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0, 10.0}, {0.0, 0.0, 600.0, 0.0}};
+  auto f = std::make_unique<GmPhdFilter<double, TwoComponentCaps>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kKnownUniform;
+  REQUIRE(f->init(p) == Status::kOk);
+  auto scan = std::make_unique<ScanD>();
+  int capacity_steps = 0;
+  for (int k = 0; k < 10; ++k) {
+    phdtest::make_scan(*scan, k, three, 3, 0, 11);
+    const std::uint64_t before = f->counters().track_cap_hits;
+    const Status st = f->step(*scan);
+    CHECK((st == Status::kCapacityExceeded) == (f->counters().track_cap_hits > before));
+    if (st == Status::kCapacityExceeded) ++capacity_steps;
+  }
+  CHECK(capacity_steps > 0);
+  CHECK(f->counters().mixture_truncated > 0);
+}

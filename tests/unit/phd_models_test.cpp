@@ -145,7 +145,8 @@ TEST_CASE("mixture reduction merges close components by moment matching and prun
   ReductionSettings<double> s;
   ReductionScratch<8> scratch;
   std::uint64_t repairs = 0;
-  CHECK(reduce_mixture(in, out, s, scratch, repairs) == 0);
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 0);
   REQUIRE(out.size() == 2);
   CHECK(out[0].weight == doctest::Approx(0.8));
   CHECK(out[0].label == 7);
@@ -153,6 +154,7 @@ TEST_CASE("mixture reduction merges close components by moment matching and prun
   // P = 100 + spread: (0.6*2.5^2 + 0.2*7.5^2)/0.8 = 18.75
   CHECK(out[0].P(0, 0) == doctest::Approx(118.75));
   CHECK(out[1].weight == doctest::Approx(0.5));
+  CHECK(max_dropped == 0.0);  // nothing truncated
 }
 
 TEST_CASE("mixture reduction counts components dropped by the cap") {
@@ -167,10 +169,12 @@ TEST_CASE("mixture reduction counts components dropped by the cap") {
   ReductionSettings<double> s;
   ReductionScratch<8> scratch;
   std::uint64_t repairs = 0;
-  CHECK(reduce_mixture(in, out, s, scratch, repairs) == 1);
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 1);
   REQUIRE(out.size() == 2);
   CHECK(out[0].weight == doctest::Approx(0.3));  // heaviest kept
   CHECK(out[1].weight == doctest::Approx(0.2));
+  CHECK(max_dropped == doctest::Approx(0.1));
 }
 
 TEST_CASE("mixture truncation keeps the heaviest merged components, not the heaviest heads") {
@@ -192,13 +196,15 @@ TEST_CASE("mixture truncation keeps the heaviest merged components, not the heav
   ReductionSettings<double> s;
   ReductionScratch<8> scratch;
   std::uint64_t repairs = 0;
-  CHECK(reduce_mixture(in, out, s, scratch, repairs) == 1);
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 1);
   REQUIRE(out.size() == 2);
   CHECK(out[0].label == 1);
   CHECK(out[0].weight == doctest::Approx(0.5));
   CHECK(out[1].label == 3);
   CHECK(out[1].weight == doctest::Approx(0.45));
   CHECK(out[1].x(0) == doctest::Approx((0.25 * 2000.0 + 0.2 * 2005.0) / 0.45));
+  CHECK(max_dropped == doctest::Approx(0.3));  // B, replaced by C+D
 }
 
 TEST_CASE("mixture truncation re-sorts the kept components heaviest first") {
@@ -218,8 +224,10 @@ TEST_CASE("mixture truncation re-sorts the kept components heaviest first") {
   ReductionSettings<double> s;
   ReductionScratch<8> scratch;
   std::uint64_t repairs = 0;
-  CHECK(reduce_mixture(in, out, s, scratch, repairs) == 1);
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 1);
   REQUIRE(out.size() == 2);
   CHECK(out[0].weight == doctest::Approx(0.55));
   CHECK(out[1].weight == doctest::Approx(0.4));
+  CHECK(max_dropped == doctest::Approx(0.2));
 }

@@ -83,10 +83,14 @@ class PhdFilter : public rfs::GmFilterFrame<PhdFilter<T, Caps, Cardinalized>, T,
   }
 
   // Truncation to kMaxComponents is the J_max step of the GM-PHD reduction
-  // (mixture.h): counted in mixture_truncated, not a capacity error.
+  // (mixture.h): counted in mixture_truncated, not a capacity error, unless
+  // a component left out weighed extract_threshold or more (it would have
+  // been reported as a target): that one is also a track_cap_hits.
   void reduce() {
-    counters_.mixture_truncated +=
-        rfs::reduce_mixture(work_, components_, reduction_, scratch_, counters_.numerical_repairs);
+    T max_dropped = T(0);
+    counters_.mixture_truncated += rfs::reduce_mixture(work_, components_, reduction_, scratch_,
+                                                       counters_.numerical_repairs, max_dropped);
+    if (max_dropped >= params_.extract_threshold) ++counters_.track_cap_hits;
   }
 
   void predict(T dt) {
