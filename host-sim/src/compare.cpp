@@ -123,7 +123,9 @@ nlohmann::ordered_json track_scores_json(const TrackScoreTotals& t) {
           {"tpd", t.tpd()},
           {"nvt", t.nvt()},
           {"false_tracks_per_run", t.nft()},
-          {"targets_never_tracked", t.targets - t.targets_tracked}};
+          {"targets_never_tracked", t.targets - t.targets_tracked},
+          {"coverage_from_birth5", t.settled_coverage()},
+          {"min_target_coverage_from_birth5", t.settled_scans > 0 ? t.min_settled_coverage : 0.0}};
 }
 
 // The seed 003 Sec. IV-A columns of one row (docs/algorithms/metrics.md
@@ -158,17 +160,19 @@ std::string seed003_metrics_markdown(const CompareResult& r) {
 
 std::string track_scores_markdown(const CompareResult& r) {
   std::string s = "\n| tracker | TTL [scans] | breaks / target | ID switches / target | TPD | NVT | false tracks / run "
-                  "| targets never tracked |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+                  "| targets never tracked | coverage from birth + 5 (worst target) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const CompareRow& x : r.rows) {
     const TrackScoreTotals& t = x.track_scores;
     s += "| " + x.tracker + " | " + fmt("%.2f", t.ttl_scans()) + " | " + fmt("%.3f", t.per_target(t.track_breaks)) +
          " | " + fmt("%.3f", t.per_target(t.id_switches)) + " | " + fmt("%.3f", t.tpd()) + " | " +
          fmt("%.2f", t.nvt()) + " | " + fmt("%.2f", t.nft()) + " | " + std::to_string(t.targets - t.targets_tracked) +
-         " |\n";
+         " | " + fmt("%.3f", t.settled_coverage()) + " (" +
+         fmt("%.3f", t.settled_scans > 0 ? t.min_settled_coverage : 0.0) + ") |\n";
   }
   s += "\nTrack scores (host-sim/src/eval/track_scoring.h, docs/algorithms/metrics.md): TTL = scans from a "
        "target's birth to its first confirmed track; a break = its track ended and a new ID took over; TPD = "
-       "fraction of its alive scans covered by a confirmed track.\n";
+       "fraction of its alive scans covered by a confirmed track; coverage from birth + 5 = the same over the scans from 5 "
+       "after its birth on, pooled (in brackets: the worst target of any run).\n";
   return s;
 }
 

@@ -148,7 +148,12 @@ void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
                        {"aee_bearing_mrad", t.aee_bearing_rad() * 1e3},
                        {"id_switches_per_target", t.per_target(t.id_switches)},
                        {"fragmentations_per_target", t.per_target(t.fragmentations)},
-                       {"track_breaks_per_target", t.per_target(t.track_breaks)}};
+                       {"track_breaks_per_target", t.per_target(t.track_breaks)},
+                       {"coverage_from_birth5", t.settled_coverage()},
+                       {"min_target_coverage_from_birth5", t.settled_scans > 0 ? t.min_settled_coverage : 0.0}};
+  nlohmann::ordered_json by_target = nlohmann::ordered_json::object();
+  for (const auto& [id, v] : t.settled_by_target) by_target[std::to_string(id)] = t.settled_coverage_of(id);
+  j["track_scores"]["coverage_from_birth5_by_target"] = by_target;
 }
 
 nlohmann::ordered_json object_rmse_json(const Summary& s) {

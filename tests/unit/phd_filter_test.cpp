@@ -158,3 +158,54 @@ TEST_CASE("bad params, out-of-order scans and invalid measurements are statuses"
   CHECK(f->counters().scans_rejected == 1);  // init() reset the earlier one
   CHECK(f->counters().scans == 1);
 }
+
+namespace {
+struct TwoComponentCaps : DefaultCaps {
+  static constexpr std::size_t kMaxMixtureComponents = 2;
+};
+}  // namespace
+
+TEST_CASE("GM-PHD truncation to kMaxMixtureComponents is counted, not a capacity error") {
+  // 40 clutter points per scan give far more than 2 components after
+  // merging from scan 1 on: each step truncates, counts it in
+  // mixture_truncated and still returns kOk (docs/algorithms/gm-phd.md
+  // §Mixture reduction, step 3).
+  auto f = std::make_unique<GmPhdFilter<double, TwoComponentCaps>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kEstimatedUniform;
+  REQUIRE(f->init(p) == Status::kOk);
+  auto scan = std::make_unique<ScanD>();
+  std::uint64_t before = 0;
+  for (int k = 0; k < 5; ++k) {
+    phdtest::make_scan(*scan, k, kTruth, 2, 40, 11);
+    CHECK(f->step(*scan) == Status::kOk);
+    if (k >= 1) CHECK(f->counters().mixture_truncated > before);
+    before = f->counters().mixture_truncated;
+    REQUIRE(f->components().size() <= 2);
+    if (f->components().size() == 2) CHECK(f->components()[0].weight >= f->components()[1].weight);
+  }
+  CHECK(f->counters().track_cap_hits == 0);
+}
+
+TEST_CASE("GM-PHD truncation that leaves out a target-weight component is a capacity error") {
+  // Three well-separated targets, no clutter, J_max 2: once each target's
+  // component weighs about 1, the truncation must leave one of them out
+  // (weight >= extract_threshold 0.5): counted in mixture_truncated AND in
+  // track_cap_hits, and the step returns kCapacityExceeded.
+  const phdtest::Truth three[3] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0, 10.0}, {0.0, 0.0, 600.0, 0.0}};
+  auto f = std::make_unique<GmPhdFilter<double, TwoComponentCaps>>();
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kKnownUniform;
+  REQUIRE(f->init(p) == Status::kOk);
+  auto scan = std::make_unique<ScanD>();
+  int capacity_steps = 0;
+  for (int k = 0; k < 10; ++k) {
+    phdtest::make_scan(*scan, k, three, 3, 0, 11);
+    const std::uint64_t before = f->counters().track_cap_hits;
+    const Status st = f->step(*scan);
+    CHECK((st == Status::kCapacityExceeded) == (f->counters().track_cap_hits > before));
+    if (st == Status::kCapacityExceeded) ++capacity_steps;
+  }
+  CHECK(capacity_steps > 0);
+  CHECK(f->counters().mixture_truncated > 0);
+}

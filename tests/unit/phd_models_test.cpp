@@ -145,7 +145,8 @@ TEST_CASE("mixture reduction merges close components by moment matching and prun
   ReductionSettings<double> s;
   ReductionScratch<8> scratch;
   std::uint64_t repairs = 0;
-  CHECK(reduce_mixture(in, out, s, scratch, repairs) == 0);
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 0);
   REQUIRE(out.size() == 2);
   CHECK(out[0].weight == doctest::Approx(0.8));
   CHECK(out[0].label == 7);
@@ -153,6 +154,7 @@ TEST_CASE("mixture reduction merges close components by moment matching and prun
   // P = 100 + spread: (0.6*2.5^2 + 0.2*7.5^2)/0.8 = 18.75
   CHECK(out[0].P(0, 0) == doctest::Approx(118.75));
   CHECK(out[1].weight == doctest::Approx(0.5));
+  CHECK(max_dropped == 0.0);  // nothing truncated
 }
 
 TEST_CASE("mixture reduction counts components dropped by the cap") {
@@ -167,8 +169,65 @@ TEST_CASE("mixture reduction counts components dropped by the cap") {
   ReductionSettings<double> s;
   ReductionScratch<8> scratch;
   std::uint64_t repairs = 0;
-  CHECK(reduce_mixture(in, out, s, scratch, repairs) == 1);
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 1);
   REQUIRE(out.size() == 2);
   CHECK(out[0].weight == doctest::Approx(0.3));  // heaviest kept
   CHECK(out[1].weight == doctest::Approx(0.2));
+  CHECK(max_dropped == doctest::Approx(0.1));
+}
+
+TEST_CASE("mixture truncation keeps the heaviest merged components, not the heaviest heads") {
+  // Heads in weight order: A 0.5, B 0.3, C 0.25; D (0.2) lies 5 m from C
+  // under P = 100 I (Mahalanobis^2 0.25 <= 4) and merges into it: C+D = 0.45.
+  // With room for 2 the J_max rule keeps A and C+D and leaves B out.
+  StaticVector<TargetComponent<double>, 8> in;
+  StaticVector<TargetComponent<double>, 2> out;
+  const double w[4] = {0.5, 0.3, 0.25, 0.2};
+  const double x[4] = {0.0, 1000.0, 2000.0, 2005.0};
+  for (int k = 0; k < 4; ++k) {
+    TargetComponent<double> c;
+    c.weight = w[k];
+    c.x(0) = x[k];
+    c.P = Mat4<double>::Identity() * 100.0;
+    c.label = static_cast<std::uint32_t>(k + 1);
+    (void)in.push_back(c);
+  }
+  ReductionSettings<double> s;
+  ReductionScratch<8> scratch;
+  std::uint64_t repairs = 0;
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 1);
+  REQUIRE(out.size() == 2);
+  CHECK(out[0].label == 1);
+  CHECK(out[0].weight == doctest::Approx(0.5));
+  CHECK(out[1].label == 3);
+  CHECK(out[1].weight == doctest::Approx(0.45));
+  CHECK(out[1].x(0) == doctest::Approx((0.25 * 2000.0 + 0.2 * 2005.0) / 0.45));
+  CHECK(max_dropped == doctest::Approx(0.3));  // B, replaced by C+D
+}
+
+TEST_CASE("mixture truncation re-sorts the kept components heaviest first") {
+  // Room for 2; heads 0.4 (alone), 0.3 (absorbs 0.25: 0.55), 0.2 (alone).
+  // Kept after the merge: 0.4 then 0.55; the 0.2 is left out; output 0.55, 0.4.
+  StaticVector<TargetComponent<double>, 8> in;
+  StaticVector<TargetComponent<double>, 2> out;
+  const double w[4] = {0.4, 0.3, 0.25, 0.2};
+  const double x[4] = {0.0, 1000.0, 1005.0, 3000.0};
+  for (int k = 0; k < 4; ++k) {
+    TargetComponent<double> c;
+    c.weight = w[k];
+    c.x(0) = x[k];
+    c.P = Mat4<double>::Identity() * 100.0;
+    (void)in.push_back(c);
+  }
+  ReductionSettings<double> s;
+  ReductionScratch<8> scratch;
+  std::uint64_t repairs = 0;
+  double max_dropped = -1.0;
+  CHECK(reduce_mixture(in, out, s, scratch, repairs, max_dropped) == 1);
+  REQUIRE(out.size() == 2);
+  CHECK(out[0].weight == doctest::Approx(0.55));
+  CHECK(out[1].weight == doctest::Approx(0.4));
+  CHECK(max_dropped == doctest::Approx(0.2));
 }

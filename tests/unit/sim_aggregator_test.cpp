@@ -71,7 +71,7 @@ constexpr std::uint64_t TrackerCounters::*kCounterFields[] = {
     &TrackerCounters::clutter_born,    &TrackerCounters::clutter_deleted,  &TrackerCounters::clutter_cap_hits,
     &TrackerCounters::bp_not_converged, &TrackerCounters::numerical_repairs, &TrackerCounters::gap_resets,
     &TrackerCounters::measurements_duplicate, &TrackerCounters::association_cap_hits,
-    &TrackerCounters::tentative_evicted};
+    &TrackerCounters::tentative_evicted, &TrackerCounters::mixture_truncated};
 static_assert(sizeof(kCounterFields) / sizeof(kCounterFields[0]) * sizeof(std::uint64_t) == sizeof(TrackerCounters),
               "a TrackerCounters field is missing from kCounterFields");
 
@@ -143,7 +143,8 @@ TEST_CASE("sim aggregator: every TrackerCounters field is summed and written, ga
   CHECK(j["counters"]["measurements_duplicate"] == 101 * 16);
   CHECK(j["counters"]["association_cap_hits"] == 101 * 17);
   CHECK(j["counters"]["tentative_evicted"] == 101 * 18);
-  CHECK(j["counters"].size() == 18);
+  CHECK(j["counters"]["mixture_truncated"] == 101 * 19);
+  CHECK(j["counters"].size() == 19);
 }
 
 TEST_CASE("sim aggregator: hand-computed means over evaluation scans, statuses, latency and measurements") {

@@ -245,3 +245,37 @@ TEST_CASE("track scoring: the AMOTA of every run is averaged over runs") {
   t.add(score_run(b.scans, b.est, gate(50.0)));
   CHECK(t.amota() == doctest::Approx(0.5));
 }
+
+TEST_CASE("track scoring: coverage from birth + 5 judges only the scans from 5 after the birth on") {
+  // Target 1 alive scans 1..10, covered on 3..6 and 9..10: its settled scans
+  // are 6..10 (5), covered 6, 9, 10 (3): 3/5. Target 2 born at scan 4, alive
+  // 4..10, covered on every scan: settled 9..10, 2/2. Pooled 5/7, worst 0.6.
+  Run r(10);
+  for (std::uint32_t k = 1; k <= 10; ++k) r.target(k, 1, 0.0, 0.0);
+  for (std::uint32_t k = 4; k <= 10; ++k) r.target(k, 2, 5000.0, 0.0);
+  for (std::uint32_t k : {3u, 4u, 5u, 6u, 9u, 10u}) r.track(k, 7, 1.0, 0.0);
+  for (std::uint32_t k = 4; k <= 10; ++k) r.track(k, 8, 5001.0, 0.0);
+  const RunTrackScore s = score_run(r.scans, r.est, gate(50.0));
+  REQUIRE(s.targets.size() == 2);
+  CHECK(s.targets[0].settled_scans == 5);
+  CHECK(s.targets[0].settled_covered_scans == 3);
+  CHECK(s.targets[1].settled_scans == 2);
+  CHECK(s.targets[1].settled_covered_scans == 2);
+  TrackScoreTotals t;
+  t.add(s);
+  CHECK(t.settled_coverage() == doctest::Approx(5.0 / 7.0));
+  CHECK(t.min_settled_coverage == doctest::Approx(0.6));
+  CHECK(t.settled_coverage_of(1) == doctest::Approx(0.6));
+  CHECK(t.settled_coverage_of(2) == doctest::Approx(1.0));
+}
+
+TEST_CASE("track scoring: a target that dies within 5 scans of its birth has no settled coverage") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 0.0, 0.0);
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(50.0)));
+  CHECK(t.settled_scans == 0);
+  CHECK(t.settled_coverage() == doctest::Approx(0.0));
+  CHECK(t.settled_by_target.empty());
+  CHECK(t.min_settled_coverage == doctest::Approx(1.0));  // no pair judged
+}

@@ -73,6 +73,8 @@ struct TrackerCounters {
   std::uint64_t association_cap_hits = 0;     ///< gated (track, measurement) pairs dropped by an association cap
   std::uint64_t tentative_evicted = 0;        ///< tentative tracks deleted to make room for a more likely
                                               ///< birth when the track table was full (never a confirmed one)
+  std::uint64_t mixture_truncated = 0;        ///< Gaussian components left out by a mixture's J_max truncation
+                                              ///< (GM-PHD/CPHD, CBMeMBer; rfs/mixture.h): counted, not a cap error
 };
 
 /// Calls f(name, member pointer) for every TrackerCounters field, in
@@ -98,9 +100,10 @@ void for_each_counter(F&& f) {
   f("measurements_duplicate", &TrackerCounters::measurements_duplicate);
   f("association_cap_hits", &TrackerCounters::association_cap_hits);
   f("tentative_evicted", &TrackerCounters::tentative_evicted);
+  f("mixture_truncated", &TrackerCounters::mixture_truncated);
 }
 /// Number of fields for_each_counter() visits.
-inline constexpr std::size_t kTrackerCounterFields = 18;
+inline constexpr std::size_t kTrackerCounterFields = 19;
 static_assert(sizeof(TrackerCounters) == kTrackerCounterFields * sizeof(std::uint64_t),
               "every TrackerCounters field must be listed in for_each_counter()");
 

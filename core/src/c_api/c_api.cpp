@@ -85,6 +85,7 @@ mptrack_status mptrack_get_counters(const mptrack_tracker* tracker, mptrack_coun
   counters->measurements_duplicate = c.measurements_duplicate;
   counters->association_cap_hits = c.association_cap_hits;
   counters->tentative_evicted = c.tentative_evicted;
+  counters->mixture_truncated = c.mixture_truncated;
   counters->scans_over_detection_cap = tracker->scans_over_detection_cap;
   return MPTRACK_OK;
 }

@@ -105,11 +105,14 @@ struct TargetFollower {
 
   void scan(std::uint32_t k, const scenario::TruthState& truth, const TrackOut* track, const ScanAssignment& now) {
     ++score.alive_scans;
+    const bool settled = k >= score.birth_scan + kSettleScans;
+    if (settled) ++score.settled_scans;
     if (track == nullptr) {
       covered_last_scan = false;
       return;
     }
     ++score.covered_scans;
+    if (settled) ++score.settled_covered_scans;
     if (score.first_covered_scan < 0) score.first_covered_scan = static_cast<std::int32_t>(k);
     if (has_last && track->id != last_track) {
       ++score.id_switches;
@@ -190,6 +193,14 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
     abs_bearing_err_sum_rad += t.abs_bearing_err_sum_rad;
     sq_range_err_sum_m2 += t.sq_range_err_sum_m2;
     sq_velocity_err_sum_m2ps2 += t.sq_velocity_err_sum_m2ps2;
+    if (t.settled_scans == 0) continue;
+    settled_scans += t.settled_scans;
+    settled_covered_scans += t.settled_covered_scans;
+    auto& by_id = settled_by_target[t.target_id];
+    by_id.first += t.settled_covered_scans;
+    by_id.second += t.settled_scans;
+    const double f = static_cast<double>(t.settled_covered_scans) / static_cast<double>(t.settled_scans);
+    if (f < min_settled_coverage) min_settled_coverage = f;
   }
   amota_sum += run.amota;
 }
@@ -208,5 +219,12 @@ double TrackScoreTotals::per_target(std::uint64_t count) const { return ratio(st
 double TrackScoreTotals::rmse_range_m() const { return std::sqrt(ratio(sq_range_err_sum_m2, covered_scans)); }
 double TrackScoreTotals::rmse_velocity_mps() const { return std::sqrt(ratio(sq_velocity_err_sum_m2ps2, covered_scans)); }
 double TrackScoreTotals::amota() const { return ratio(amota_sum, runs); }
+double TrackScoreTotals::settled_coverage() const {
+  return ratio(static_cast<double>(settled_covered_scans), settled_scans);
+}
+double TrackScoreTotals::settled_coverage_of(std::uint32_t target_id) const {
+  const auto it = settled_by_target.find(target_id);
+  return it == settled_by_target.end() ? 0.0 : ratio(static_cast<double>(it->second.first), it->second.second);
+}
 
 }  // namespace mptrack::sim

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "mptrack/metrics/assignment.h"
@@ -29,6 +30,11 @@ struct TrackScoringParams {
 /// from 1.
 TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, double ospa_cutoff_m);
 
+/// Scans after a target's birth that the settled coverage does not judge
+/// (the confirmation delay the issue-18 criterion allows): coverage from
+/// birth + 5 on (docs/algorithms/metrics.md §Track scores).
+inline constexpr std::uint32_t kSettleScans = 5;
+
 /// One target over one run.
 struct TargetScore {
   std::uint32_t target_id = 0;
@@ -39,6 +45,8 @@ struct TargetScore {
   std::uint32_t id_switches = 0;     ///< its assigned track id changed (from the last one it had)
   std::uint32_t fragmentations = 0;  ///< coverage resumed after an interruption
   std::uint32_t track_breaks = 0;    ///< id changed and the previous track no longer existed
+  std::uint32_t settled_scans = 0;   ///< alive scans from birth_scan + kSettleScans on
+  std::uint32_t settled_covered_scans = 0;  ///< of those, the scans covered_scans counts
   double abs_range_err_sum_m = 0.0;      ///< sum over covered scans of |ground range error| [m]
   double abs_bearing_err_sum_rad = 0.0;  ///< sum over covered scans of |bearing error| [rad]
   double sq_range_err_sum_m2 = 0.0;      ///< sum over covered scans of (ground range error)^2 [m^2]
@@ -88,6 +96,11 @@ struct TrackScoreTotals {
   double abs_range_err_sum_m = 0.0, abs_bearing_err_sum_rad = 0.0;
   double sq_range_err_sum_m2 = 0.0, sq_velocity_err_sum_m2ps2 = 0.0;
   double amota_sum = 0.0;                          ///< sum of the runs' AMOTA
+  /// Settled coverage (kSettleScans): pooled scans, the worst (run, target)
+  /// fraction, and per target id the pooled scans over runs.
+  std::uint64_t settled_scans = 0, settled_covered_scans = 0;
+  double min_settled_coverage = 1.0;  ///< over (run, target) pairs alive past the settle scans
+  std::map<std::uint32_t, std::pair<std::uint64_t, std::uint64_t>> settled_by_target;  ///< id -> (covered, scans)
 
   void add(const RunTrackScore& run);
   double nvt() const;                ///< targets with a valid track, mean per run
@@ -100,6 +113,8 @@ struct TrackScoreTotals {
   double rmse_range_m() const;       ///< RMS ground range error over covered target-scans [m]
   double rmse_velocity_mps() const;  ///< RMS of |velocity error| over covered target-scans [m/s]
   double amota() const;              ///< AMOTA, mean over runs (seed 003 Sec. IV-A)
+  double settled_coverage() const;   ///< settled covered / settled alive target-scans (pooled)
+  double settled_coverage_of(std::uint32_t target_id) const;  ///< the same for one target id over runs
 };
 
 }  // namespace mptrack::sim

@@ -200,8 +200,12 @@ class CbMemberFilter : public rfs::GmFilterFrame<CbMemberFilter<T, Caps>, T, Cap
     Track u;
     u.r = r_u < kMaxExistence ? r_u : kMaxExistence;
     u.label = pred_[m.best].label;
-    counters_.track_cap_hits +=
-        rfs::reduce_mixture(raw_, u.comps, reduction_, raw_scratch_, counters_.numerical_repairs);
+    // Truncation to kMaxComponentsPerBernoulli: the J_max step of the
+    // reduction (mixture.h), counted, not a capacity error (the weights are
+    // shares of one Bernoulli: losing one never loses a target).
+    T max_dropped = T(0);
+    counters_.mixture_truncated += rfs::reduce_mixture(raw_, u.comps, reduction_, raw_scratch_,
+                                                       counters_.numerical_repairs, max_dropped);
     renormalize(u);
     push_track(u);
   }

@@ -14,7 +14,8 @@
 //                   cardinality.h, and p(n) updated
 //             with q = P_D N(z; z_hat, S) K_RL(a) (K_RL = 1 without amplitude);
 //             clutter statistics updated with P(z is clutter)
-//   reduce    prune / merge / cap (mixture.h), policy and counters there
+//   reduce    prune / merge / truncate to the J_max heaviest (mixture.h),
+//             policy there; truncation counted in mixture_truncated
 //   extract   PHD: components with w > extract_threshold;
 //             CPHD: the MAP cardinality's heaviest components.
 // The clutter model is the same object for the three filters (mode chosen
@@ -24,7 +25,9 @@
 // rfs/rfs_caps.h) after reduction; the update works in
 // a buffer of kMaxWork components. Overflow policy there: when it is full a
 // new component replaces the lightest one if it is heavier (else it is
-// dropped); both are counted in counters().track_cap_hits.
+// dropped); both are counted in counters().track_cap_hits, a capacity
+// error (the buffer is sized so that it does not fill: 575 of 768 at most
+// on seed000-s2, docs/algorithms/gm-phd.md §Mixture reduction).
 #pragma once
 
 #include <array>
@@ -79,9 +82,15 @@ class PhdFilter : public rfs::GmFilterFrame<PhdFilter<T, Caps, Cardinalized>, T,
     cardinality_.init();
   }
 
+  // Truncation to kMaxComponents is the J_max step of the GM-PHD reduction
+  // (mixture.h): counted in mixture_truncated, not a capacity error, unless
+  // a component left out weighed extract_threshold or more (it would have
+  // been reported as a target): that one is also a track_cap_hits.
   void reduce() {
-    counters_.track_cap_hits +=
-        rfs::reduce_mixture(work_, components_, reduction_, scratch_, counters_.numerical_repairs);
+    T max_dropped = T(0);
+    counters_.mixture_truncated += rfs::reduce_mixture(work_, components_, reduction_, scratch_,
+                                                       counters_.numerical_repairs, max_dropped);
+    if (max_dropped >= params_.extract_threshold) ++counters_.track_cap_hits;
   }
 
   void predict(T dt) {

@@ -9,9 +9,20 @@
 //     symmetric KL to it is <= U_sigma (the bi-threshold rule, seed 001 eqs. (80)-(81));
 //     kinematics are moment-matched, powers KL-projected (seed 001 eqs. (83)-(85)), the
 //     label and measurement index are the heaviest's;
-//  3. capacity: merged components come out heaviest first, so when the
-//     output is full the rest (the lightest) are dropped, and each drop is
-//     counted (cap_hits). Nothing is dropped silently.
+//  3. truncation to the output capacity J_max (Vo & Ma 2006, Table II:
+//     "if more than J_max components, keep the J_max with the largest
+//     weights"): while the output has room, merged components are appended
+//     in order of their heads' weights; once it is full, a merged component
+//     replaces the lightest kept one if it is heavier, and the output is
+//     then re-sorted heaviest first (stable). Each component left out is
+//     counted in the return value, and the largest weight left out is
+//     reported; the caller adds the count to
+//     TrackerCounters::mixture_truncated, which is not a capacity error
+//     unless what was left out could have been a target (GM-PHD/CPHD: a
+//     weight >= extract_threshold; docs/algorithms/gm-phd.md §Mixture
+//     reduction). Nothing is dropped
+//     silently. When nothing is truncated the operations are those of the
+//     plain greedy merge, bit for bit.
 #pragma once
 
 #include <array>
@@ -56,14 +67,48 @@ struct ReductionScratch {
   std::array<bool, NIn> member{};
 };
 
+/// Step 3 of the policy: appends m, or when out is full replaces its
+/// lightest entry (ties: the later one) if m is heavier. Returns true if a
+/// component was left out; its weight is then raised into max_dropped.
+template <class T, std::size_t NOut>
+bool keep_heaviest(StaticVector<TargetComponent<T>, NOut>& out, const TargetComponent<T>& m, T& max_dropped) {
+  if (out.push_back(m) == Status::kOk) return false;
+  std::size_t lightest = 0;
+  for (std::size_t k = 1; k < out.size(); ++k) {
+    if (!(out[k].weight > out[lightest].weight)) lightest = k;
+  }
+  T dropped = m.weight;
+  if (m.weight > out[lightest].weight) {
+    dropped = out[lightest].weight;
+    out[lightest] = m;
+  }
+  if (dropped > max_dropped) max_dropped = dropped;
+  return true;
+}
+
+/// Stable insertion sort, heaviest first (after a truncation only: the
+/// extraction reads the mixture in this order).
+template <class T, std::size_t NOut>
+void sort_heaviest_first(StaticVector<TargetComponent<T>, NOut>& out) {
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    const TargetComponent<T> c = out[i];
+    std::size_t j = i;
+    for (; j > 0 && out[j - 1].weight < c.weight; --j) out[j] = out[j - 1];
+    out[j] = c;
+  }
+}
+
 /// Reduces `in` into `out` (cleared first). Returns the number of
-/// components dropped for capacity; numerical repairs are added to repairs.
+/// components left out by the truncation to out's capacity (step 3), and
+/// the largest weight left out in max_dropped (0 if none); numerical
+/// repairs are added to repairs.
 template <class T, std::size_t NIn, std::size_t NOut>
 std::size_t reduce_mixture(const StaticVector<TargetComponent<T>, NIn>& in,
                            StaticVector<TargetComponent<T>, NOut>& out,
                            const ReductionSettings<T>& s, ReductionScratch<NIn>& scratch,
-                           std::uint64_t& repairs) {
+                           std::uint64_t& repairs, T& max_dropped) {
   out.clear();
+  max_dropped = T(0);
   const std::size_t n = in.size();
   for (std::size_t i = 0; i < n; ++i) scratch.used[i] = !(in[i].weight >= s.prune_threshold);
   std::size_t dropped = 0;
@@ -108,8 +153,9 @@ std::size_t reduce_mixture(const StaticVector<TargetComponent<T>, NIn>& in,
     m.P = P / w;
     if (model::keep_spd(m.P, s.min_variance)) ++repairs;
     if (s.use_power) m.power = acc.result(s.max_alpha);
-    if (out.push_back(m) != Status::kOk) ++dropped;
+    if (keep_heaviest(out, m, max_dropped)) ++dropped;
   }
+  if (dropped > 0) sort_heaviest_first(out);
   return dropped;
 }
 
