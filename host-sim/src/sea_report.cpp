@@ -32,7 +32,7 @@ constexpr Column kColumns[] = {
     {"frag", "Frag per target", 1.0, "%.2f"},
     {"rmse_range_m", "RMSE range [m]", 1.0, "%.2f"},
     {"rmse_velocity_mps", "RMSE velocity [cm/s]", 100.0, "%.2f"},
-    {"mospa", "MOSPA", 1.0, "%.2f"},
+    {"mospa_mahalanobis", "MOSPA (Mahalanobis in range, range rate; c 9.4, p 2)", 1.0, "%.2f"},
     {"mean_ospa", "OSPA range [m] (c 141 m, p 2)", 1.0, "%.1f"},
     {"tpd", "TPD", 1.0, "%.3f"},
     {"nft", "false tracks per scan", 1.0, "%.2f"},

@@ -20,13 +20,13 @@ struct Entry {
 };
 
 constexpr Entry kEntries[] = {
-    {"mfbp", "MF-BP (MP-RMTT) window-7 smoother, slide 3, clutter estimated (seed 000)"},
+    {"mfbp", "MF-BP (MP-RMTT) window-7 smoother, slide 3, clutter estimated (seed 000); polar and OTHR scenarios (mfbp-* too: seed 001's Cartesian ones are refused)"},
     {"mfbp-filter", "MF-BP online filter (window 1, one scan per step)"},
     {"mfbp-ki", "MF-BP ablation MP-RMTT-KI: kinematics only, no amplitude"},
     {"mfbp-nce", "MF-BP ablation MP-RMTT-NCE: uniform clutter of known rate, no estimation"},
     {"mfbp-kce", "MF-BP ablation MP-RMTT-KCE: clutter map known exactly (from the scenario)"},
     {"mfbp-st", "MF-BP ablation MP-RMTTst: first MP iteration only"},
-    {"gnn", "GNN + Kalman baseline"},
+    {"gnn", "GNN + Kalman baseline; polar and OTHR scenarios (seed 001's Cartesian ones are refused)"},
     {"mfbp-multipath", "multipath MF-BP (seed 002): BP over (target, path), OTHR scenarios only"},
     {"mptf", "multipath track fusion baseline (seed 002): slant PDA path tracks fused in ground, OTHR only"},
     {"gmphd", "IGGM GM-PHD with amplitude, clutter map estimated (seed 001)"},

@@ -198,4 +198,11 @@ TEST_CASE("cli: more clutter components than mfbp-kce's known map holds are refu
                  {"mfbp.known_clutter.num_components = 12", "kMaxKnownClutterComponents"});
 }
 
+TEST_CASE("cli: gnn and mfbp refuse seed 001's Cartesian scenarios instead of running with every detection invalid") {
+  // Before: both ran to the end with measurements_invalid = every detection
+  // and OSPA = c on every scan, with no message.
+  expect_refused("--scenario seed001-s1 --tracker gnn --runs 1", {"gnn models polar", "\"cartesian\"", "gmphd"});
+  expect_refused("--scenario seed001-s1 --tracker mfbp-filter --runs 1", {"mfbp-filter models polar", "cbmember"});
+}
+
 TEST_CASE("cli: cleanup") { fs::remove_all(scratch()); }

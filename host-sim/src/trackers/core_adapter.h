@@ -77,6 +77,17 @@ inline PolarRegion<double> scenario_region(const scenario::ScenarioSpec& s) {
           scenario::deg_to_rad(s.region.azimuth_max_deg)};
 }
 
+/// "" unless `setup` is a Cartesian (seed 001) scenario, which `tracker`
+/// cannot model: its measurement model is polar (range, azimuth), so every
+/// Cartesian detection would fail the region check and the run would end
+/// with no track at all. The refusal names the trackers that do run there.
+inline std::string polar_scenario_required(const TrackerSetup& setup, const std::string& tracker) {
+  if (setup.spec.space != scenario::MeasurementSpace::kCartesian) return "";
+  return tracker +
+         " models polar (range, azimuth) measurements and cannot run measurement_space \"cartesian\" "
+         "(the seed001-* scenarios); use gmphd, gmcphd, cbmember (and their variants) or oracle there";
+}
+
 /// The scenario's range and azimuth noise; the Doppler std stays the tracker's.
 inline void set_scenario_noise(const scenario::ScenarioSpec& s, PolarNoise<double>& n) {
   n.range_std_m = s.sigma_range_m;

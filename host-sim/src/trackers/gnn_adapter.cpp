@@ -15,6 +15,7 @@ using Tracker = GnnTracker<double, DefaultCaps>;
 class GnnAdapter final : public CoreTrackerAdapter<Tracker> {
  public:
   std::string init(const TrackerSetup& setup) override {
+    if (std::string why = polar_scenario_required(setup, "gnn"); !why.empty()) return why;
     const scenario::ScenarioSpec& s = setup.spec;
     GnnParams<double> p;
     set_scenario_noise(s, p.noise);

@@ -38,6 +38,7 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
   explicit MfbpAdapter(std::string variant) : variant_(std::move(variant)) {}
 
   std::string init(const TrackerSetup& setup) override {
+    if (std::string why = polar_scenario_required(setup, variant_); !why.empty()) return why;
     spec_ = setup.spec;
     scale_ = setup.clutter_scale;
     MfbpParams<double> p = seed000_default_params<double>();
