@@ -24,7 +24,7 @@ double SeaTrackErrors::rmse_velocity_mps() const {
 }
 
 double match_range_std_m(const sea::SeaScenario& s) { return s.range_bin_m; }
-double match_rate_std_mps(const sea::SeaScenario& s) { return s.doppler_bin_hz() * s.wavelength_m() / 2.0; }
+double match_rate_std_mps(const sea::SeaScenario& s) { return s.doppler_bin_mps(); }
 
 bool sea_trackers_need_features(const std::vector<std::string>& trackers) {
   for (const std::string& t : trackers) {

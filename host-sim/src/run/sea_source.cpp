@@ -48,7 +48,7 @@ scenario::ScenarioSpec sea_spec_view(const sea::SeaScenario& s) {
   // The range-rate half of R: one Doppler bin, as the trackers assume
   // (trackers/sea_setup.h). The Mahalanobis MOSPA whitens with both halves
   // (docs/algorithms/metrics.md); the field is named for OTHR, its first user.
-  spec.othr.sigma_range_rate_mps = s.doppler_bin_hz() * s.wavelength_m() / 2.0;
+  spec.othr.sigma_range_rate_mps = s.doppler_bin_mps();
   spec.threshold = 1.0;                // unused (the sea trackers run without amplitude)
   spec.space = scenario::MeasurementSpace::kPolar;
   return spec;

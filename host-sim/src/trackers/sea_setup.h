@@ -23,7 +23,7 @@ inline void configure_sea_mfbp(const TrackerSetup& setup, MfbpParams<double>& p)
   set_scenario_noise(setup.spec, p.noise);
   // One Doppler bin of range rate: the centroid of a 4-bin Hann main lobe
   // is within a bin (docs/algorithms/sea_clutter.md §Detection chain).
-  p.noise.doppler_std_mps = s.doppler_bin_hz() * s.wavelength_m() / 2.0;
+  p.noise.doppler_std_mps = s.doppler_bin_mps();
   // The map spans +-PRF/2: range rates within +-(PRF/2) lambda/2 (7.97 m/s).
   p.doppler_span_mps = s.prf_hz / 2.0 * s.wavelength_m() / 2.0;
   p.v_max_x_mps = p.doppler_span_mps;

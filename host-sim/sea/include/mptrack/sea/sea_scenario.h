@@ -53,6 +53,9 @@ struct SeaScenario {
 
   double wavelength_m() const { return 299792458.0 / carrier_hz; }
   double doppler_bin_hz() const { return prf_hz / static_cast<double>(pulses); }
+  /// One Doppler bin as range rate [m/s] (f_D = 2 rdot / lambda): the plots'
+  /// range-rate resolution, the trackers' and the metrics' range-rate std.
+  double doppler_bin_mps() const { return doppler_bin_hz() * wavelength_m() / 2.0; }
   /// Empty string if valid, else the first offending field.
   std::string validate() const;
 };
