@@ -82,8 +82,8 @@ TEST_CASE("adc: a single echo lands at its range bin and angle bin after the fro
   const double amp = std::sqrt(0.05) * 0.53 * lambda / (four_pi * std::sqrt(four_pi) * r * r);
   CHECK(syn.chirp_samples() == 115);  // round(3.6 us * 32 MHz) = round(115.2)
   const auto& rmf = rig->fe.range_stage();
-  const double pr = static_cast<double>(rmf.profile_re(0, 4)[10]);
-  const double pi = static_cast<double>(rmf.profile_im(0, 4)[10]);
+  const double pr = static_cast<double>(rmf.value_re(0, 4, 10));
+  const double pi = static_cast<double>(rmf.value_im(0, 4, 10));
   CHECK(std::sqrt(pr * pr + pi * pi) == doctest::Approx(amp * 115.0).epsilon(1e-4));
 
   // The strongest detection (noise-free: range/angle sidelobes are local

@@ -93,8 +93,8 @@ TEST_CASE("doppler: with one chirp the stage is a transpose (seed 004, no Dopple
   CHECK_FALSE(fe::DopplerProcessor<C1>::kHasDoppler);
   CHECK(dop->velocity_mps(0.0) == 0.0);
   for (std::size_t v = 0; v < 9; ++v) {
-    CHECK(dop->snapshot_re(17, 0)[v] == rmf->profile_re(0, v)[17]);
-    CHECK(dop->snapshot_im(17, 0)[v] == rmf->profile_im(0, v)[17]);
+    CHECK(dop->snapshot_re(17, 0)[v] == rmf->value_re(0, v, 17));
+    CHECK(dop->snapshot_im(17, 0)[v] == rmf->value_im(0, v, 17));
   }
 }
 

@@ -49,12 +49,10 @@ TEST_CASE("range MF: an echo delayed by 13 samples peaks at bin 13 with amplitud
   mptrack::test::synthesize<Caps>(p, &t, 1, 0.0, 1, *cube);
   REQUIRE(rmf->process(*cube) == Status::kOk);
   for (std::size_t v = 0; v < 9; ++v) {
-    const float* re = rmf->profile_re(0, v);
-    const float* im = rmf->profile_im(0, v);
     std::size_t best = 0;
     double best_mag = 0.0;
     for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) {
-      const double mag = std::hypot(dbl(re[g]), dbl(im[g]));
+      const double mag = std::hypot(dbl(rmf->value_re(0, v, g)), dbl(rmf->value_im(0, v, g)));
       if (mag > best_mag) {
         best_mag = mag;
         best = g;
@@ -95,7 +93,7 @@ TEST_CASE("range MF: the profile equals the naive correlation with the reference
         acc += std::complex<double>(dbl(cube->iq[o]), dbl(cube->iq[o + 1])) *
                std::conj(std::complex<double>(w * ur, w * ui));
       }
-      const std::complex<double> got(dbl(rmf->profile_re(0, v)[g]), dbl(rmf->profile_im(0, v)[g]));
+      const std::complex<double> got(dbl(rmf->value_re(0, v, g)), dbl(rmf->value_im(0, v, g)));
       max_err = std::max(max_err, std::abs(got - acc));
       max_mag = std::max(max_mag, std::abs(acc));
     }
@@ -119,8 +117,8 @@ TEST_CASE("range MF: processing gain on white noise is (sum w)^2 / sum w^2 (rect
       REQUIRE(rmf->process(*cube) == Status::kOk);
       for (std::size_t v = 0; v < 9; ++v) {
         for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) {
-          const double re = dbl(rmf->profile_re(0, v)[g]);
-          const double im = dbl(rmf->profile_im(0, v)[g]);
+          const double re = dbl(rmf->value_re(0, v, g));
+          const double im = dbl(rmf->value_im(0, v, g));
           out_var += re * re + im * im;
           ++n;
         }
@@ -158,9 +156,10 @@ TEST_CASE("range MF: an int16 cube gives the same profile as the float cube of c
     cf->iq[i] = static_cast<float>(code) / 32768.0f;
   }
   REQUIRE(rmf->process(*ci) == Status::kOk);
-  std::vector<float> a(rmf->profile_re(0, 4), rmf->profile_re(0, 4) + Caps::kNumRangeBins);
+  std::vector<float> a(Caps::kNumRangeBins);
+  for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) a[g] = rmf->value_re(0, 4, g);
   REQUIRE(rmf->process(*cf) == Status::kOk);
-  for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) CHECK(a[g] == rmf->profile_re(0, 4)[g]);
+  for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) CHECK(a[g] == rmf->value_re(0, 4, g));
 }
 
 TEST_CASE("range MF: channel calibration multiplies each channel's profile by its complex gain") {
@@ -172,9 +171,9 @@ TEST_CASE("range MF: channel calibration multiplies each channel's profile by it
   t.range_m = range_of_delay(p, 10.0);
   mptrack::test::synthesize<Caps>(p, &t, 1, 0.0, 1, *cube);
   REQUIRE(rmf->process(*cube) == Status::kOk);
-  const float r0 = rmf->profile_re(0, 2)[10];
-  const float i0 = rmf->profile_im(0, 2)[10];
-  const float r5 = rmf->profile_re(0, 5)[10];
+  const float r0 = rmf->value_re(0, 2, 10);
+  const float i0 = rmf->value_im(0, 2, 10);
+  const float r5 = rmf->value_re(0, 5, 10);
   std::array<float, 9> cr{};
   std::array<float, 9> ci{};
   cr.fill(1.0f);
@@ -182,9 +181,9 @@ TEST_CASE("range MF: channel calibration multiplies each channel's profile by it
   ci[2] = 2.0f;  // c_2 = 2j
   REQUIRE(rmf->set_channel_calibration(cr, ci) == Status::kOk);
   REQUIRE(rmf->process(*cube) == Status::kOk);
-  CHECK(rmf->profile_re(0, 2)[10] == -2.0f * i0);
-  CHECK(rmf->profile_im(0, 2)[10] == 2.0f * r0);
-  CHECK(rmf->profile_re(0, 5)[10] == r5);  // c = 1 reproduces the bits
+  CHECK(rmf->value_re(0, 2, 10) == -2.0f * i0);
+  CHECK(rmf->value_im(0, 2, 10) == 2.0f * r0);
+  CHECK(rmf->value_re(0, 5, 10) == r5);  // c = 1 reproduces the bits
   ci[4] = std::nanf("");
   CHECK(rmf->set_channel_calibration(cr, ci) == Status::kInvalidArgument);
 }
@@ -202,14 +201,14 @@ TEST_CASE("range MF: remove_dc cancels a constant offset on every sample") {
   REQUIRE(rmf->process(*cube) == Status::kOk);
   double max_mag = 0.0;
   for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) {
-    max_mag = std::max(max_mag, std::hypot(dbl(rmf->profile_re(0, 0)[g]), dbl(rmf->profile_im(0, 0)[g])));
+    max_mag = std::max(max_mag, std::hypot(dbl(rmf->value_re(0, 0, g)), dbl(rmf->value_im(0, 0, g))));
   }
   CHECK(max_mag < 1e-5);
   p.remove_dc = false;
   REQUIRE(rmf->init(p) == Status::kOk);
   REQUIRE(rmf->process(*cube) == Status::kOk);
   // Without removal the DC correlates with the chirp: |sum u| is far from 0.
-  CHECK(std::hypot(dbl(rmf->profile_re(0, 0)[0]), dbl(rmf->profile_im(0, 0)[0])) > 1.0);
+  CHECK(std::hypot(dbl(rmf->value_re(0, 0, 0)), dbl(rmf->value_im(0, 0, 0))) > 1.0);
 }
 
 TEST_CASE("range MF: NaN input is rejected with kInvalidInput") {

@@ -145,8 +145,8 @@ void golden_case_frontend_range(GoldenSink& g) {
   g.require(s.rmf.process(s.cube) == Status::kOk, "range filter process");
   for (std::size_t v : {std::size_t{0}, std::size_t{8}}) {
     for (std::size_t r = 0; r < Seed::kNumRangeBins; ++r) {
-      g.add(lbl("rp_re_", v * 1000 + r), s.rmf.profile_re(0, v)[r]);
-      g.add(lbl("rp_im_", v * 1000 + r), s.rmf.profile_im(0, v)[r]);
+      g.add(lbl("rp_re_", v * 1000 + r), s.rmf.value_re(0, v, r));
+      g.add(lbl("rp_im_", v * 1000 + r), s.rmf.value_im(0, v, r));
     }
   }
 }

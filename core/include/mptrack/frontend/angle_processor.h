@@ -99,10 +99,16 @@ class AngleProcessor {
             buf_im_[v] = 0.0f;
           }
           fft_.forward(buf_re_.data(), buf_im_.data());
+          // Powers in FFT order (one vector pass), then the fftshift
+          // scatter a = (k + N_A/2) mod N_A as two runs down the map
+          // column of cell (g, d).
           for (std::size_t k = 0; k < kNa; ++k) {
-            const std::size_t a = (k + kNa / 2) % kNa;  // fftshift: a = h + N_A/2
-            map_[map_index(g, d, a)] = buf_re_[k] * buf_re_[k] + buf_im_[k] * buf_im_[k];
+            pow_[k] = buf_re_[k] * buf_re_[k] + buf_im_[k] * buf_im_[k];
           }
+          float* col = map_.data() + map_index(g, d, 0);
+          constexpr std::size_t kHalf = kNa / 2;
+          for (std::size_t k = 0; k < kHalf; ++k) col[(k + kHalf) * kNumRangeBins] = pow_[k];
+          for (std::size_t k = kHalf; k < kNa; ++k) col[(k - kHalf) * kNumRangeBins] = pow_[k];
         }
       }
     }
@@ -195,6 +201,7 @@ class AngleProcessor {
   std::array<float, kNumVirtual> window_{};
   alignas(16) std::array<float, kNa> buf_re_{};
   alignas(16) std::array<float, kNa> buf_im_{};
+  alignas(16) std::array<float, kNa> pow_{};
   std::array<float, kMapSize> map_{};
   std::array<bool, kNa> tested_{};
   double spacing_ = 0.5;

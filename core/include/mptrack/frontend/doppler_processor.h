@@ -27,6 +27,7 @@
 
 #include "mptrack/dsp/fft.h"
 #include "mptrack/frontend/frontend_params.h"
+#include "mptrack/frontend/prefetch.h"
 #include "mptrack/frontend/range_matched_filter.h"
 #include "mptrack/frontend/window.h"
 #include "mptrack/status.h"
@@ -66,17 +67,22 @@ class DopplerProcessor {
   /// Reads the range profiles of rmf and fills the snapshots.
   Status process(const RangeMatchedFilter<Caps>& rmf) {
     if (!initialized_) return Status::kNotInitialized;
-    for (std::size_t v = 0; v < kNumVirtual; ++v) {
-      if constexpr (kHasDoppler) {
-        for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
-          const std::size_t nb = kNumRangeBins - g0 < kBlock ? kNumRangeBins - g0 : kBlock;
-          transform_block(rmf, v, g0, nb);
-        }
-      } else {
-        for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+    // Range bin outer, channel inner: each transform reads its kNc chirps
+    // as one run (the range stage's [v][g][c] layout) and the snapshots of
+    // bin g (kNc x kNumVirtual values per plane) stay in L1 while the
+    // kNumVirtual transforms fill them.
+    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+      for (std::size_t v = 0; v < kNumVirtual; ++v) {
+        if constexpr (kHasDoppler) {
+          if (v + 1 < kNumVirtual) {  // next channel's run: kNumRangeBins rows ahead
+            prefetch_read(rmf.chirps_re(v + 1, g), kNc * sizeof(float));
+            prefetch_read(rmf.chirps_im(v + 1, g), kNc * sizeof(float));
+          }
+          transform(rmf.chirps_re(v, g), rmf.chirps_im(v, g), g, v);
+        } else {
           const std::size_t idx = g * kNumVirtual + v;
-          snap_re_[idx] = rmf.profile_re(0, v)[g];
-          snap_im_[idx] = rmf.profile_im(0, v)[g];
+          snap_re_[idx] = rmf.value_re(0, v, g);
+          snap_im_[idx] = rmf.value_im(0, v, g);
         }
       }
     }
@@ -111,46 +117,32 @@ class DopplerProcessor {
   bool initialized() const { return initialized_; }
 
  private:
-  // Range bins per block: one chirp row of a profile read as one run of
-  // kBlock floats (a 64-byte line), instead of one float per cache line when
-  // each range bin gathered its chirps separately.
-  static constexpr std::size_t kBlock = kNumRangeBins < 16 ? kNumRangeBins : 16;
-  // Row stride of the transposed block: >= 16 floats so every row starts
-  // 64-byte aligned (kNc is a power of two).
-  static constexpr std::size_t kRow = kNc < 16 ? 16 : kNc;
-
-  // Slow-time FFT of range bins [g0, g0 + nb) of channel v: windowed
-  // transpose of the chirp rows (each element w[c] x, as before), then one
-  // FFT per bin and the fftshift scatter; the same operations per bin as a
-  // per-bin gather, only the order of the bins' reads changes.
-  void transform_block(const RangeMatchedFilter<Caps>& rmf, std::size_t v, std::size_t g0, std::size_t nb) {
+  // Slow-time FFT of channel v at range bin g: windowed copy (each element
+  // w[c] x), one FFT, and the fftshift scatter d = (k + kNc/2) mod kNc as
+  // two runs (no modulo per element).
+  void transform(const float* pr, const float* pi, std::size_t g, std::size_t v) {
     for (std::size_t c = 0; c < kNc; ++c) {
-      const float* pr = rmf.profile_re(c, v) + g0;
-      const float* pi = rmf.profile_im(c, v) + g0;
-      const float w = window_[c];
-      for (std::size_t b = 0; b < nb; ++b) {
-        blk_re_[b * kRow + c] = pr[b] * w;
-        blk_im_[b * kRow + c] = pi[b] * w;
-      }
+      buf_re_[c] = pr[c] * window_[c];
+      buf_im_[c] = pi[c] * window_[c];
     }
-    for (std::size_t b = 0; b < nb; ++b) {
-      float* br = blk_re_.data() + b * kRow;
-      float* bi = blk_im_.data() + b * kRow;
-      fft_.forward(br, bi);
-      float* sr = snap_re_.data() + (g0 + b) * kNc * kNumVirtual + v;
-      float* si = snap_im_.data() + (g0 + b) * kNc * kNumVirtual + v;
-      for (std::size_t k = 0; k < kNc; ++k) {
-        const std::size_t d = (k + kNc / 2) % kNc;
-        sr[d * kNumVirtual] = br[k];
-        si[d * kNumVirtual] = bi[k];
-      }
+    fft_.forward(buf_re_.data(), buf_im_.data());
+    float* sr = snap_re_.data() + g * kNc * kNumVirtual + v;
+    float* si = snap_im_.data() + g * kNc * kNumVirtual + v;
+    constexpr std::size_t kHalf = kNc / 2;
+    for (std::size_t k = 0; k < kHalf; ++k) {
+      sr[(k + kHalf) * kNumVirtual] = buf_re_[k];
+      si[(k + kHalf) * kNumVirtual] = buf_im_[k];
+    }
+    for (std::size_t k = kHalf; k < kNc; ++k) {
+      sr[(k - kHalf) * kNumVirtual] = buf_re_[k];
+      si[(k - kHalf) * kNumVirtual] = buf_im_[k];
     }
   }
 
   dsp::Fft<(kNc > 1 ? kNc : 2)> fft_{};
   std::array<float, kNc> window_{};
-  alignas(64) std::array<float, (kNc > 1 ? kBlock * kRow : 1)> blk_re_{};
-  alignas(64) std::array<float, (kNc > 1 ? kBlock * kRow : 1)> blk_im_{};
+  alignas(64) std::array<float, (kNc > 1 ? kNc : 1)> buf_re_{};
+  alignas(64) std::array<float, (kNc > 1 ? kNc : 1)> buf_im_{};
   std::array<float, kNumCells * kNumVirtual> snap_re_{};
   std::array<float, kNumCells * kNumVirtual> snap_im_{};
   double velocity_per_bin_mps_ = 0.0;
