@@ -1,9 +1,10 @@
 // CFAR cost per cell (issue 16): the whole-line detector cfar_line() (sliding
-// integer sums for CA, sorted window for OS) against Cfar::test() called at
+// integer sums for CA, sorted window or order-statistic heaps for OS) against Cfar::test() called at
 // every cell (O(T) gather per cell), on unit exponential noise.
 //   cfar/<line|test>/<ca|os>/cells:<n>/T:<t>   guard 2
 // Sweeps: cells 256..65535 at T 8 (cost linear in cells = flat per cell),
-// T 2..64 at 4096 cells (flat per cell for CA; OS per-cell moves grow with T).
+// T 2..64 at 4096 cells, and for cfar_line T 2..64 at 65535 cells (flat per
+// cell for CA; OS: sorted window up to 2T = 32, O(log T) heaps above).
 //   cfar/screen/ca/cells:<n>/T:<t>   CfarScreen (cfar_screen.h), the
 //     detector's threshold-first pass: cells that may pass CA-CFAR, guard 2
 // Counter ns_per_cell: CPU time per cell.
@@ -103,6 +104,13 @@ void register_cfar_benchmarks() {
       b->ArgNames({"cells", "T"})->Unit(benchmark::kMicrosecond);
       for (long n : {256L, 1024L, 4096L, 16384L, 65535L}) b->Args({n, 8});
       for (long t : {2L, 4L, 16L, 32L, 64L}) b->Args({4096, t});
+      // The same T sweep on a long line: the branch predictor cannot learn a
+      // 65 535-cell line between iterations (it learns much of a 4 096-cell
+      // one, which flatters the branchy OS paths), so this is the per-cell
+      // cost a front end sees.
+      if (line_mode) {
+        for (long t : {2L, 4L, 8L, 16L, 24L, 32L, 64L}) b->Args({65535, t});
+      }
     }
   }
 }

@@ -63,6 +63,33 @@ TEST_CASE("cfar_line OS equals Cfar::test bit for bit at every cell and edge pol
   }
 }
 
+TEST_CASE("cfar_line OS equals Cfar::test bit for bit at the widest window over a long line") {
+  // G = T = 64: the window spans 257 cells, and 2000 cells wrap the order
+  // window's 512-slot table several times; every os_rank extreme too.
+  for (fe::CfarEdge edge : kEdges) {
+    for (std::size_t rank : {std::size_t{1}, std::size_t{64}, std::size_t{128}}) {
+      fe::CfarParams p;
+      p.type = fe::CfarType::kOrderedStatistic;
+      p.edge = edge;
+      p.pfa = 1e-3;
+      p.guard_cells = 64;
+      p.training_cells = 64;
+      p.os_rank = rank;
+      fe::Cfar cfar;
+      REQUIRE(cfar.init(p) == Status::kOk);
+      const std::vector<float> line = noisy_line(2000, static_cast<unsigned>(rank));
+      std::vector<fe::CfarResult> out(line.size());
+      (void)fe::cfar_line(cfar, line.data(), line.size(), out.data());
+      for (std::size_t i = 0; i < line.size(); ++i) {
+        const fe::CfarResult r = cfar.test(line.data(), line.size(), i);
+        REQUIRE(out[i].tested == r.tested);
+        REQUIRE(std::memcmp(&out[i].noise, &r.noise, sizeof(float)) == 0);
+        REQUIRE(out[i].detected == r.detected);
+      }
+    }
+  }
+}
+
 TEST_CASE("cfar_line CA/GO/SO noise is the window mean to float rounding, same cells tested") {
   for (fe::CfarType type : {fe::CfarType::kCellAveraging, fe::CfarType::kGreatestOf, fe::CfarType::kSmallestOf}) {
     for (fe::CfarEdge edge : kEdges) {

@@ -16,12 +16,15 @@
 //     The sum is then rounded once: noise = float(double(sum) 2^-s / n).
 //     So CA/GO/SO noise can differ from Cfar::test() (a float sum in index
 //     order) in the last bits; the detection rule is the same.
-//   * OS keeps the 2T training cells sorted: per cell two values leave and
-//     two enter (one per side); each replacement counts the ranks of the
-//     leaving and entering values (branch-free compares) and shifts only
-//     the cells between the two ranks.
-//     The k-th smallest is then read in O(1). Selection returns a value, so
-//     OS noise equals Cfar::test()'s bit for bit.
+//   * OS: per cell two training values leave and two enter (one per side).
+//     Windows of 2T > 64 cells are kept in two heaps split at rank k
+//     (cfar_order_window.h): each replacement O(log T), the k-th smallest
+//     is the root of the lower heap. Narrower windows are kept sorted: each
+//     replacement counts the ranks of the leaving and entering values
+//     (branch-free compares) and shifts only the cells between the two
+//     ranks, O(T) but faster than the heaps' branches at that size
+//     (kSortedWindowMax). Selection returns a value, so OS noise equals
+//     Cfar::test()'s bit for bit either way.
 //   * Cells without a full two-sided window (the first and last G + T of a
 //     kShift line) use Cfar::gather_training() and the same sums (O(T) each,
 //     a fixed 2(G + T) cells per line); kSkip leaves them untested; kWrap
@@ -37,6 +40,7 @@
 #include <cstring>
 
 #include "mptrack/frontend/cfar.h"
+#include "mptrack/frontend/cfar_order_window.h"
 #include "mptrack/validate.h"
 
 namespace mptrack::frontend {
@@ -80,12 +84,20 @@ inline void sorted_replace(float* w, std::size_t n, float out, float in) {
   }
 }
 
+/// Widest OS window (2T cells) kept as a sorted run; wider ones use the
+/// heaps of cfar_order_window.h. Measured per cell (bench cfar/line/os,
+/// 65 535 cells, 2-core x86-64 host, docs/results/bench/README.md): the sorted
+/// run's vector rank count and short memmove beat the heaps' data-dependent
+/// branches up to 2T = 64 (T = 32: 69 against 83 ns), the heaps are ahead at
+/// 2T = 128 and keep growing as log T where the sorted run grows as T.
+constexpr std::size_t kSortedWindowMax = 64;
+
 }  // namespace cfar_line_detail
 
 /// Runs `cfar` over every cell of line[0..len) into out[0..len); returns the
 /// number of detections. len >= cfar.min_line_length() is the caller's
 /// precondition (otherwise every cell is untested, as with test()).
-/// Allocation-free: O(T) stack for the OS window.
+/// Allocation-free: O(T) stack for the OS window (about 2.5 KB).
 inline std::size_t cfar_line(const Cfar& cfar, const float* line, std::size_t len, CfarResult* out) {
   using namespace cfar_line_detail;
   for (std::size_t i = 0; i < len; ++i) out[i] = CfarResult{};
@@ -113,9 +125,9 @@ inline std::size_t cfar_line(const Cfar& cfar, const float* line, std::size_t le
   const float alpha = cfar.alpha_f();
   const bool os = p.type == CfarType::kOrderedStatistic;
   const std::size_t os_k = p.os_rank - 1;
-  // Noise from integer half sums (CA/GO/SO) or the sorted window (OS).
-  auto noise_of = [&](std::int64_t sl, std::int64_t sr, const float* sorted) -> float {
-    if (os) return sorted[os_k] * cfar.os_norm();
+  // Noise from integer half sums (CA/GO/SO) or the k-th smallest (OS).
+  auto noise_of = [&](std::int64_t sl, std::int64_t sr, float kth) -> float {
+    if (os) return kth * cfar.os_norm();
     if (p.type == CfarType::kCellAveraging) {
       return static_cast<float>(static_cast<double>(sl + sr) * inv_scale / static_cast<double>(2 * t));
     }
@@ -139,8 +151,8 @@ inline std::size_t cfar_line(const Cfar& cfar, const float* line, std::size_t le
     std::int64_t sr = 0;
     for (std::size_t k = 0; k < t; ++k) sl += quantise(cells[k], scale);
     for (std::size_t k = t; k < n; ++k) sr += quantise(cells[k], scale);
-    if (os) std::sort(cells.data(), cells.data() + n);
-    finish(i, noise_of(sl, sr, cells.data()));
+    if (os) std::nth_element(cells.data(), cells.data() + os_k, cells.data() + n);
+    finish(i, noise_of(sl, sr, cells[os_k]));
   };
   const bool wrap = p.edge == CfarEdge::kWrap;
   // Slid cells: [first, last); circular indices for kWrap.
@@ -154,17 +166,26 @@ inline std::size_t cfar_line(const Cfar& cfar, const float* line, std::size_t le
       return line[j];
     };
     // Window of cell `first`: left [first - reach, first - g), right (first + g, first + reach].
-    std::array<float, Cfar::kMaxTraining> sorted;
+    // OS cells are named by their unwrapped position + len (never negative).
+    std::array<float, Cfar::kMaxTraining> cells0;
+    std::array<std::size_t, Cfar::kMaxTraining> pos0;
     std::int64_t sl = 0;
     std::int64_t sr = 0;
     for (std::size_t k = 0; k < t; ++k) {
-      sorted[k] = at(first, k, reach);
-      sorted[t + k] = at(first, g + 1 + k, 0);
-      sl += quantise(sorted[k], scale);
-      sr += quantise(sorted[t + k], scale);
+      cells0[k] = at(first, k, reach);
+      cells0[t + k] = at(first, g + 1 + k, 0);
+      pos0[k] = first + len + k - reach;
+      pos0[t + k] = first + len + g + 1 + k;
+      sl += quantise(cells0[k], scale);
+      sr += quantise(cells0[t + k], scale);
     }
-    if (os) std::sort(sorted.data(), sorted.data() + 2 * t);
-    finish(first, noise_of(sl, sr, sorted.data()));
+    const bool heaps = os && 2 * t > kSortedWindowMax;
+    const bool sorted = os && !heaps;
+    CfarOrderWindow window;
+    if (heaps) window.reset(cells0.data(), pos0.data(), 2 * t, os_k + 1);
+    if (sorted) std::sort(cells0.data(), cells0.data() + 2 * t);
+    auto kth = [&]() { return heaps ? window.kth() : cells0[os_k]; };
+    finish(first, noise_of(sl, sr, kth()));
     for (std::size_t i = first + 1; i < last; ++i) {
       const float l_out = at(i - 1, 0, reach);
       const float l_in = at(i - 1, 0, g);
@@ -172,11 +193,15 @@ inline std::size_t cfar_line(const Cfar& cfar, const float* line, std::size_t le
       const float r_in = at(i - 1, reach + 1, 0);
       sl += quantise(l_in, scale) - quantise(l_out, scale);
       sr += quantise(r_in, scale) - quantise(r_out, scale);
-      if (os) {
-        sorted_replace(sorted.data(), 2 * t, l_out, l_in);
-        sorted_replace(sorted.data(), 2 * t, r_out, r_in);
+      if (heaps) {
+        const std::size_t at_prev = i - 1 + len;  // unwrapped position of cell i - 1
+        window.replace(at_prev - reach, at_prev - g, l_in);
+        window.replace(at_prev + g + 1, at_prev + reach + 1, r_in);
+      } else if (sorted) {
+        sorted_replace(cells0.data(), 2 * t, l_out, l_in);
+        sorted_replace(cells0.data(), 2 * t, r_out, r_in);
       }
-      finish(i, noise_of(sl, sr, sorted.data()));
+      finish(i, noise_of(sl, sr, kth()));
     }
   }
   for (std::size_t i = last > first ? last : first; i < len; ++i) gathered(i);
