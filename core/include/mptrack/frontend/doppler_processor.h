@@ -74,9 +74,13 @@ class DopplerProcessor {
     for (std::size_t g = 0; g < kNumRangeBins; ++g) {
       for (std::size_t v = 0; v < kNumVirtual; ++v) {
         if constexpr (kHasDoppler) {
-          if (v + 1 < kNumVirtual) {  // next channel's run: kNumRangeBins rows ahead
-            prefetch_read(rmf.chirps_re(v + 1, g), kNc * sizeof(float));
-            prefetch_read(rmf.chirps_im(v + 1, g), kNc * sizeof(float));
+          // Next transform's run: the next channel (kNumRangeBins rows ahead)
+          // or, after the last channel, channel 0 of the next range bin.
+          const std::size_t v_next = v + 1 < kNumVirtual ? v + 1 : 0;
+          const std::size_t g_next = v + 1 < kNumVirtual ? g : g + 1;
+          if (g_next < kNumRangeBins) {
+            prefetch_read(rmf.chirps_re(v_next, g_next), kNc * sizeof(float));
+            prefetch_read(rmf.chirps_im(v_next, g_next), kNc * sizeof(float));
           }
           transform(rmf.chirps_re(v, g), rmf.chirps_im(v, g), g, v);
         } else {
