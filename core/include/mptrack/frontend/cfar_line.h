@@ -86,10 +86,11 @@ inline void sorted_replace(float* w, std::size_t n, float out, float in) {
 
 /// Widest OS window (2T cells) kept as a sorted run; wider ones use the
 /// heaps of cfar_order_window.h. Measured per cell (bench cfar/line/os,
-/// 65 535 cells, 2-core x86-64 host, docs/results/bench/README.md): the sorted
-/// run's vector rank count and short memmove beat the heaps' data-dependent
-/// branches up to 2T = 64 (T = 32: 69 against 83 ns), the heaps are ahead at
-/// 2T = 128 and keep growing as log T where the sorted run grows as T.
+/// 65 535 cells, 2-core x86-64 host, bench/README.md issue 16 section): the
+/// sorted run's vector rank count and short memmove beat the heaps'
+/// data-dependent branches up to 2T = 64 (T = 32: 69 against 73-83 ns), the
+/// heaps are ahead at 2T = 128 (81 against 92) and grow as log T where the
+/// sorted run grows as T.
 constexpr std::size_t kSortedWindowMax = 64;
 
 }  // namespace cfar_line_detail

@@ -158,8 +158,9 @@ class RangeMatchedFilter {
   /// 64-byte line when there is a Doppler axis. Without the pad the
   /// compress() stores of one profile (stride kNumChirps floats = 512 B at
   /// 128 chirps) fall into 1/8 of the L1 sets and evict each other before
-  /// the next chirps complete their lines (measured: the range stage 25 %
-  /// slower than with the old chirp-major layout).
+  /// the next chirps complete their lines (one frontend/large run without
+  /// the pad: range stage 1.32 ms against 1.06 ms for the old chirp-major
+  /// layout; with it 0.95-1.0 ms).
   static constexpr std::size_t kChirpStride = Caps::kNumChirps > 1 ? Caps::kNumChirps + 16 : 1;
   /// Output layout [v][g][c] (row stride kChirpStride): slow time
   /// contiguous, so the Doppler stage reads each of its transforms as one run.
