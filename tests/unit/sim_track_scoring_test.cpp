@@ -279,3 +279,44 @@ TEST_CASE("track scoring: a target that dies within 5 scans of its birth has no 
   CHECK(t.settled_by_target.empty());
   CHECK(t.min_settled_coverage == doctest::Approx(1.0));  // no pair judged
 }
+
+TEST_CASE("track scoring: two tracks on an unresolved pair keep their targets while within the gate") {
+  // Targets 20 m apart; the two tracks sit between them and trade places
+  // every scan (9 m / 11 m from target 1). Assigned afresh each scan, the
+  // nearer track takes target 1: 3 switches per target over 4 scans. With
+  // the previous scan's pairs kept (CLEAR MOT), both pairs stay within the
+  // 50 m gate: no switch.
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) {
+    r.target(k, 1, 0.0, 0.0);
+    r.target(k, 2, 20.0, 0.0);
+    const bool odd = k % 2 == 1;
+    r.track(k, 11, odd ? 9.0 : 11.0, 0.0);
+    r.track(k, 12, odd ? 11.0 : 9.0, 0.0);
+  }
+  const RunTrackScore kept = score_run(r.scans, r.est, gate(50.0));
+  REQUIRE(kept.targets.size() == 2);
+  CHECK(kept.targets[0].id_switches == 0);
+  CHECK(kept.targets[1].id_switches == 0);
+  TrackScoringParams fresh = gate(50.0);
+  fresh.keep_pairs = false;
+  const RunTrackScore s = score_run(r.scans, r.est, fresh);
+  CHECK(s.targets[0].id_switches == 3);
+  CHECK(s.targets[1].id_switches == 3);
+  CHECK(s.targets[0].track_breaks == 0);
+}
+
+TEST_CASE("track scoring: a kept pair is released when its track ends, and the new id is one switch and one break") {
+  // Track 11 follows target 1 on scans 1-2 and ends; track 12, already 5 m
+  // away since scan 1 (unmatched: target 1 is taken), covers it from scan 3.
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) {
+    r.target(k, 1, 0.0, 0.0);
+    if (k <= 2) r.track(k, 11, 1.0, 0.0);
+    r.track(k, 12, 5.0, 0.0);
+  }
+  const TargetScore t = score_run(r.scans, r.est, gate(50.0)).targets.at(0);
+  CHECK(t.id_switches == 1);
+  CHECK(t.track_breaks == 1);
+  CHECK(t.covered_scans == 4);
+}

@@ -18,7 +18,7 @@ constexpr double kTwoPi = 6.283185307179586;
 }  // namespace
 
 ScanAssignment match_scan(const scenario::SimScan& scan, const EstimateOut& est, double gate_m,
-                          double min_existence, ScoringSolver& solver) {
+                          double min_existence, ScoringSolver& solver, const ScanAssignment* previous) {
   std::vector<const TrackOut*> tracks;
   for (const TrackOut& t : est.tracks) {
     if (t.confirmed && t.existence >= min_existence) tracks.push_back(&t);
@@ -26,20 +26,48 @@ ScanAssignment match_scan(const scenario::SimScan& scan, const EstimateOut& est,
   ScanAssignment out;
   for (const TrackOut* t : tracks) out[t->id] = kNoTarget;
   if (tracks.empty() || scan.truth.empty()) return out;
-  if (solver.resize(tracks.size(), scan.truth.size()) != Status::kOk) {
+  // CLEAR MOT (Bernardin, Stiefelhagen 2008, Sec. 2.1.1): a pair of the
+  // previous scan that is still within the gate is kept before the
+  // assignment, so two tracks on one unresolved pair do not swap targets
+  // on position noise (docs/algorithms/metrics.md §Track scores).
+  std::vector<bool> truth_taken(scan.truth.size(), false);
+  std::vector<const TrackOut*> free_tracks;
+  for (const TrackOut* t : tracks) {
+    bool kept = false;
+    const auto prev = previous != nullptr ? previous->find(t->id) : ScanAssignment::const_iterator{};
+    if (previous != nullptr && prev != previous->end() && prev->second != kNoTarget) {
+      for (std::size_t j = 0; j < scan.truth.size() && !kept; ++j) {
+        const scenario::TruthState& x = scan.truth[j];
+        if (x.target_id != prev->second || truth_taken[j]) continue;
+        if (std::hypot(t->px - x.x.px, t->py - x.x.py) < gate_m) {
+          out[t->id] = x.target_id;
+          truth_taken[j] = true;
+          kept = true;
+        }
+      }
+    }
+    if (!kept) free_tracks.push_back(t);
+  }
+  std::vector<std::size_t> free_truths;
+  for (std::size_t j = 0; j < scan.truth.size(); ++j) {
+    if (!truth_taken[j]) free_truths.push_back(j);
+  }
+  if (free_tracks.empty() || free_truths.empty()) return out;
+  if (solver.resize(free_tracks.size(), free_truths.size()) != Status::kOk) {
     throw std::runtime_error("track scoring: more than 256 tracks or targets in a scan");
   }
-  for (std::size_t i = 0; i < tracks.size(); ++i) {
-    for (std::size_t j = 0; j < scan.truth.size(); ++j) {
-      const double d = std::hypot(tracks[i]->px - scan.truth[j].x.px, tracks[i]->py - scan.truth[j].x.py);
+  for (std::size_t i = 0; i < free_tracks.size(); ++i) {
+    for (std::size_t j = 0; j < free_truths.size(); ++j) {
+      const scenario::TruthState& x = scan.truth[free_truths[j]];
+      const double d = std::hypot(free_tracks[i]->px - x.x.px, free_tracks[i]->py - x.x.py);
       solver.cost(i, j) = std::min(d, gate_m);
     }
   }
   if (solver.solve() != Status::kOk) throw std::runtime_error("track scoring: assignment failed");
-  for (std::size_t i = 0; i < tracks.size(); ++i) {
+  for (std::size_t i = 0; i < free_tracks.size(); ++i) {
     const std::int32_t j = solver.row_assignment(i);
     if (j >= 0 && solver.cost(i, static_cast<std::size_t>(j)) < gate_m) {
-      out[tracks[i]->id] = scan.truth[static_cast<std::size_t>(j)].target_id;
+      out[free_tracks[i]->id] = scan.truth[free_truths[static_cast<std::size_t>(j)]].target_id;
     }
   }
   return out;
@@ -142,7 +170,10 @@ RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::
   std::vector<ScanAssignment> per_scan(n);
   // -inf: every confirmed track, whatever existence its tracker reports.
   const double all = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n; ++i) per_scan[i] = match_scan(scans[i], by_scan[i], params.gate_m, all, *solver);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ScanAssignment* previous = params.keep_pairs && i > 0 ? &per_scan[i - 1] : nullptr;
+    per_scan[i] = match_scan(scans[i], by_scan[i], params.gate_m, all, *solver, previous);
+  }
 
   RunTrackScore run;
   const std::map<std::uint32_t, bool> valid = classify_tracks(per_scan, params.min_track_scans, run);

@@ -23,6 +23,10 @@ namespace mptrack::sim {
 struct TrackScoringParams {
   double gate_m = 0.0;                ///< a track scores a target only within this distance [m]
   std::uint32_t min_track_scans = 1;  ///< shorter confirmed tracks are ignored (seed 002: 5)
+  /// CLEAR MOT's matching: a (track, target) pair of the previous scan still
+  /// within the gate is kept before the optimal assignment of the rest
+  /// (false: every scan assigned afresh, the rule before session 7).
+  bool keep_pairs = true;
 };
 
 /// The scenario's scoring: gate = the OSPA cut-off c of the run; tracks of
@@ -73,14 +77,18 @@ using ScoringSolver = AssignmentSolver<double, kMaxScored>;
 /// the truths of `scan`: optimal assignment of cost min(Euclidean distance,
 /// gate); pairs at or beyond the gate are dropped (OSPA's cut-off trick,
 /// which never trades a within-gate pair for a cheaper out-of-gate one).
-/// Throws std::runtime_error if a scan has more than kMaxScored tracks or truths.
+/// With `previous` (the last scan's result), each of its pairs whose track
+/// and target are both here and closer than the gate is kept first and only
+/// the rest are assigned (CLEAR MOT). Throws std::runtime_error if a scan
+/// has more than kMaxScored tracks or truths.
 ScanAssignment match_scan(const scenario::SimScan& scan, const EstimateOut& est, double gate_m,
-                          double min_existence, ScoringSolver& solver);
+                          double min_existence, ScoringSolver& solver, const ScanAssignment* previous = nullptr);
 
 /// Scores a run: scans[k-1] holds the truth of scan k, by_scan[k-1] the
 /// tracker's estimate (only confirmed tracks count). Each scan matches
 /// confirmed tracks to targets by an optimal assignment of Euclidean
-/// distance gated at params.gate_m. Throws std::runtime_error if a scan has
+/// distance gated at params.gate_m, keeping the previous scan's pairs that
+/// are still within the gate when params.keep_pairs. Throws std::runtime_error if a scan has
 /// more than 256 tracks or targets.
 RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
                         const TrackScoringParams& params);

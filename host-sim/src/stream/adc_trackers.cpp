@@ -139,9 +139,25 @@ class AdcMfbpAdapter final : public CoreTrackerAdapter<MfbpTracker<double, Defau
     //   run). The filter keeps p_b 0.15 (at 0.05 its OSPA is 1 m worse).
     p.report_existence_min = 0.5;
     if (!filter_) p.p_birth = 0.05;
+    // - duplicate suppression (docs/results/seed004.md §Track termination and
+    //   duplicates): a second confirmed track born on a strong drone's split
+    //   detections sits within Mahalanobis^2 4 of the first in the 4-D state
+    //   and is deleted; 10 runs, mfbp: strong-target frames with two tracks
+    //   on the drone 4.0 -> 0 per run (OSPA 0.52 -> 0.32 m), seed004-drones
+    //   4.31 -> 4.14 m. 64 also merges drones 1 and 2 at their crossing
+    //   (5.48 m). Neutral for mfbp-filter (no duplicate that close).
+    p.duplicate_chi2 = 4.0;
     if (filter_) {
       p.window_length = 1;
       p.slide = 1;
+      // - the filter has no later frames to smooth a death with: at Pd 0.4 a
+      //   miss lowers b_s by a likelihood ratio of 0.61 and a dead drone's
+      //   track was reported for 5.8 frames (death 80, 10 runs); at 0.5
+      //   (ratio 0.51) 4.1, and OSPA is better too: seed004-drones 4.60 ->
+      //   4.40 m, death 80 4.68 -> 4.47, strong-target 0.75 -> 0.46 (20 runs
+      //   seed 2: 5.01 -> 4.89 m, linger 5.6 -> 3.8). The smoother keeps 0.4
+      //   (at 0.5: 4.14 -> 4.43 m). docs/results/seed004.md.
+      p.pd_no_amplitude = 0.5;
     }
     const std::string error = apply_mfbp_params(p, setup.mfbp_params);
     if (!error.empty()) return error;

@@ -32,6 +32,7 @@ const Real kReals[] = {
     {"unresolved_chi2", [](P& p) -> double& { return p.unresolved_chi2; }},
     {"gate_chi2", [](P& p) -> double& { return p.gate_chi2; }},
     {"report_existence_min", [](P& p) -> double& { return p.report_existence_min; }},
+    {"duplicate_chi2", [](P& p) -> double& { return p.duplicate_chi2; }},
     {"p_survive", [](P& p) -> double& { return p.p_survive; }},
     {"p_birth", [](P& p) -> double& { return p.p_birth; }},
     {"confirm_threshold", [](P& p) -> double& { return p.confirm_threshold; }},

@@ -236,6 +236,14 @@ struct MfbpParams {
   std::size_t tentative_timeout_scans = 6;  ///< tentative tracks older than this are dropped
                                             ///< (two windows: docs/algorithms/mfbp.md
                                             ///< §Confirmation and reporting)
+  T duplicate_chi2 = T(0);            ///< Ours. Two live tracks, at least one confirmed, whose
+                                      ///< smoothed 4-D states on the last window scan differ by
+                                      ///< less than this Mahalanobis^2 under P_a + P_b are one
+                                      ///< target: the younger (or tentative) one is deleted
+                                      ///< (track_management.h, suppress_duplicates). 0 = off
+                                      ///< (seed 000: its formation pair is two targets that the
+                                      ///< pooled tracks keep together); the raw-frame adapter
+                                      ///< sets it (docs/algorithms/mfbp.md §Confirmation) [-]
   T report_existence_min = T(0.1);    ///< report confirmed tracks with b_s(1) >= this at the scan
                                       ///< or at the previous finalised scan [-]. Ours: the
                                       ///< paper's threshold is 0.5 at the scan alone, but p_s =
@@ -373,6 +381,7 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "delete_run", check_at_least(delete_run, 1));
   MPTRACK_CHECK_PARAM(w, "tentative_timeout_scans", check_at_least(tentative_timeout_scans, 1));
   MPTRACK_CHECK_PARAM(w, "report_existence_min", check_range(report_existence_min, T(0), T(1)));
+  MPTRACK_CHECK_PARAM(w, "duplicate_chi2", check_range(duplicate_chi2, T(0), T(1e6)));
   MPTRACK_TRY(validate_clutter_grid(span_r, span_a, kMaxCellsPerAxis, kMaxSeedCells,
                                     kMaxCellVolumeRatio, kMaxSeedFactor, kMaxCount, w));
   MPTRACK_CHECK_PARAM(w, "clutter_mode",

@@ -274,6 +274,7 @@ class MfbpTracker {
     if (params_.late_birth) late_birth(n);
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kOutput);
     mfbp::confirm_tracks(tracks_, n, params_, counters_);
+    mfbp::suppress_duplicates(tracks_, n, params_, counters_);
     for (std::size_t k = 0; k < finalize_count; ++k) emit_estimate(k);
     mfbp::manage_tracks(tracks_, clutter_, n, finalize_count, params_, counters_);
     if (estimate_clutter()) mfbp::manage_components(clutter_, finalize_count, params_, counters_);

@@ -99,6 +99,47 @@ void manage_tracks(TrackTable<T, Caps>& tracks, const ClutterTable<T, Caps>& cl,
   }
 }
 
+/// Is track b (younger, or tentative) a duplicate of track a on window scan
+/// k? Both present at k, at least one confirmed, and their smoothed states
+/// closer than duplicate_chi2 in Mahalanobis^2 under P_a + P_b (4-D: a
+/// crossing pair differs in velocity).
+template <class T, class Caps>
+bool is_duplicate(const TrackSlot<T, Caps>& a, const TrackSlot<T, Caps>& b, std::size_t k, const MfbpParams<T>& p) {
+  if (!a.alive || !b.alive || k < a.first || k < b.first || !(a.confirmed || b.confirmed)) return false;
+  const Vec4<T> e = a.xs[k] - b.xs[k];
+  const Mat4<T> C = a.Ps[k].get() + b.Ps[k].get();
+  T d2 = T(0);
+  return model::mahalanobis_n<T, 4>(e, C, d2) && d2 < p.duplicate_chi2;
+}
+
+/// Of a duplicate pair, the track to keep: a confirmed one over a tentative
+/// one, then the older (smaller id: ids are issued in birth order).
+template <class T, class Caps>
+bool keep_first(const TrackSlot<T, Caps>& a, const TrackSlot<T, Caps>& b) {
+  if (a.confirmed != b.confirmed) return a.confirmed;
+  return a.id < b.id;
+}
+
+/// Duplicate suppression after a window of n scans (docs/algorithms/mfbp.md
+/// §Confirmation and reporting; ours, duplicate_chi2 > 0): two tracks on one
+/// target (a strong target's split detections) otherwise both survive,
+/// since each takes one of the detections. The duplicate is deleted
+/// (tracks_deleted), never merged into the kept track's beliefs. O(N_T^2)
+/// 4x4 Cholesky factorisations per window.
+template <class T, class Caps>
+void suppress_duplicates(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams<T>& p,
+                         TrackerCounters& counters) {
+  if (!(p.duplicate_chi2 > T(0)) || n == 0) return;
+  const std::size_t k = n - 1;
+  for (auto& a : tracks) {
+    for (auto& b : tracks) {
+      if (&a == &b || !a.alive || !keep_first(a, b) || !is_duplicate(a, b, k, p)) continue;
+      b.alive = false;
+      ++counters.tracks_deleted;
+    }
+  }
+}
+
 /// Component death after a window whose first fc scans are finalised.
 template <class T, class Caps>
 void manage_components(ClutterTable<T, Caps>& cl, std::size_t fc, const MfbpParams<T>& p,
