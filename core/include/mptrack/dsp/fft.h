@@ -46,6 +46,7 @@
 
 #include "mptrack/dsp/fft_bit_reversal.h"
 #include "mptrack/dsp/fft_config.h"
+#include "mptrack/dsp/fft_fused_first.h"
 #include "mptrack/dsp/fft_kernels.h"
 #include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
@@ -108,10 +109,10 @@ class Fft {
   void forward(float* re, float* im) const {
 #if MPTRACK_FFT_X86_DISPATCH
     if constexpr (N < kMinDispatchSize) {
-      forward_schedule(re, im);
+      forward_schedule<false>(re, im);
       return;
     }
-    if (__builtin_cpu_supports("avx512f")) {
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
       forward_avx512(re, im);
       return;
     }
@@ -120,19 +121,19 @@ class Fft {
       return;
     }
 #endif
-    forward_schedule(re, im);
+    forward_schedule<false>(re, im);
   }
 
   /// forward() without run-time ISA dispatch: the baseline build's code
   /// (SSE2 on x86-64). For tests that prove every dispatch path gives the
   /// same bits.
-  void forward_portable(float* re, float* im) const { forward_schedule(re, im); }
+  void forward_portable(float* re, float* im) const { forward_schedule<false>(re, im); }
 
   /// Which copy forward() runs on this CPU: "avx512", "avx2" or "baseline".
   static const char* dispatch_name() {
 #if MPTRACK_FFT_X86_DISPATCH
     if (N < kMinDispatchSize) return "baseline";
-    if (__builtin_cpu_supports("avx512f")) return "avx512";
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) return "avx512";
     if (__builtin_cpu_supports("avx2")) return "avx2";
 #endif
     return "baseline";
@@ -147,6 +148,13 @@ class Fft {
 
  private:
   using Bits = fft_detail::BitReversal<N>;
+  using Fused = fft_detail::FusedFirst<N>;
+
+  // Twiddles of half-sizes 2 and 4 for j = 0, 1 (offsets 1, 2 and 3, 4).
+  fft_detail::FirstTwiddles first_twiddles() const {
+    return {{tw_re_[1], tw_re_[2]}, {tw_im_[1], tw_im_[2]}, {tw_re_[3], tw_re_[4]},
+            {tw_im_[3], tw_im_[4]}};
+  }
 
 #if MPTRACK_FFT_X86_DISPATCH
   // The dispatch copies: the whole schedule (every helper is always_inline)
@@ -154,11 +162,11 @@ class Fft {
   // -ffp-contract=off forbids contraction anyway, so each element sees the
   // same roundings as in the baseline copy.
   __attribute__((target("avx2"), noinline)) void forward_avx2(float* re, float* im) const {
-    forward_schedule(re, im);
+    forward_schedule<true>(re, im);
   }
-  __attribute__((target("avx512f,prefer-vector-width=512"), noinline)) void forward_avx512(
+  __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) void forward_avx512(
       float* re, float* im) const {
-    forward_schedule(re, im);
+    forward_schedule<true>(re, im);
   }
 #endif
 
@@ -166,9 +174,24 @@ class Fft {
   // runs of N/(4h)) and which after (natural order, runs of h) is chosen
   // per size for run length (measured, bench/README.md); every choice
   // performs the same operations per element.
+  template <bool kWide>
   MPTRACK_FFT_INLINE void forward_schedule(float* re, float* im) const {
     if constexpr (kLog2 % 2 == 1) {
       if constexpr (N >= 32) {
+#if MPTRACK_FFT_VECTOR_PERMUTE
+        if constexpr (N == 32) {  // the whole first pass and permutation in registers
+          Fused::radix2_radix4_permute_32(re, im, first_twiddles());
+          radix4_passes<8>(re, im);
+          return;
+        }
+#endif
+#if MPTRACK_FFT_X86_DISPATCH
+        if constexpr (kWide && N >= 128) {  // 8 x 8 blocks in the AVX copies
+          Fused::radix2_radix4_permute_8x8(re, im, first_twiddles());
+          radix4_passes<8>(re, im);
+          return;
+        }
+#endif
         // Half-size 2 in input order: runs of N/8 instead of 2.
         radix2_radix4_input_order(re, im);
         Bits::permute(re, im);

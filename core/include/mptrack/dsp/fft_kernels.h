@@ -118,6 +118,79 @@ MPTRACK_FFT_INLINE void radix4_run(float* __restrict r0, float* __restrict i0,
   }
 }
 
+/// The radix-2 butterfly of radix2_run on one set of values (a float or a
+/// GCC vector of lanes): the same operations in the same order.
+template <class T>
+MPTRACK_FFT_INLINE void radix2_values(T& r0, T& i0, T& r1, T& i1) {
+  const T tr = r1;
+  const T ti = i1;
+  r1 = r0 - tr;
+  i1 = i0 - ti;
+  r0 = r0 + tr;
+  i0 = i0 + ti;
+}
+
+/// The radix-2^2 butterfly of radix4_run on one set of values (a float or
+/// a GCC vector of lanes), twiddles w1 = W_{2h}^j, w2 = W_{4h}^j (W: float,
+/// which GCC broadcasts to every lane without arithmetic, or T): the same
+/// operations in the same order as radix4_run's loop body.
+template <class T, class W>
+MPTRACK_FFT_INLINE void radix4_values(T& r0, T& i0, T& r1, T& i1, T& r2, T& i2, T& r3, T& i3,
+                                      W a1r, W a1i, W a2r, W a2i) {
+  const T t1r = a1r * r1 - a1i * i1;
+  const T t1i = a1r * i1 + a1i * r1;
+  const T t3r = a1r * r3 - a1i * i3;
+  const T t3i = a1r * i3 + a1i * r3;
+  const T b0r = r0 + t1r;
+  const T b0i = i0 + t1i;
+  const T b1r = r0 - t1r;
+  const T b1i = i0 - t1i;
+  const T b2r = r2 + t3r;
+  const T b2i = i2 + t3i;
+  const T b3r = r2 - t3r;
+  const T b3i = i2 - t3i;
+  const T u2r = a2r * b2r - a2i * b2i;
+  const T u2i = a2r * b2i + a2i * b2r;
+  const T u3r = a2r * b3r - a2i * b3i;
+  const T u3i = a2r * b3i + a2i * b3r;
+  r0 = b0r + u2r;
+  i0 = b0i + u2i;
+  r2 = b0r - u2r;
+  i2 = b0i - u2i;
+  r1 = b1r + u3i;  // -j * u3 = (u3i, -u3r)
+  i1 = b1i - u3r;
+  r3 = b1r - u3i;
+  i3 = b1i + u3r;
+}
+
+/// Twiddles of the half-size-2 stage pair (h = 2, 4) for j = 0, 1:
+/// w1 = W_4^j, w2 = W_8^j (Fft's table at offsets 1 + j and 3 + j).
+struct FirstTwiddles {
+  float w1r[2];
+  float w1i[2];
+  float w2r[2];
+  float w2i[2];
+};
+
+/// radix2_radix4_input_order's work on eight rows held in values (rows
+/// q + m N/8, m = 0..7, of the input order): radix 2 on rows (m, m + 4),
+/// then half-size 2 with j = 0 on rows 0, 2, 1, 3 and j = 1 on rows 4, 6,
+/// 5, 7. The same operations per element as the in-memory pass.
+// Written out with constant indices (no loops): GCC keeps the arrays in
+// registers only when every index is a constant before its scalar
+// replacement pass runs (with loops it spilled every row to the stack).
+template <class V>
+MPTRACK_FFT_INLINE void radix2_radix4_rows(V (&r)[8], V (&m)[8], const FirstTwiddles& w) {
+  radix2_values(r[0], m[0], r[4], m[4]);
+  radix2_values(r[1], m[1], r[5], m[5]);
+  radix2_values(r[2], m[2], r[6], m[6]);
+  radix2_values(r[3], m[3], r[7], m[7]);
+  radix4_values(r[0], m[0], r[2], m[2], r[1], m[1], r[3], m[3], w.w1r[0], w.w1i[0], w.w2r[0],
+                w.w2i[0]);
+  radix4_values(r[4], m[4], r[6], m[6], r[5], m[5], r[7], m[7], w.w1r[1], w.w1i[1], w.w2r[1],
+                w.w2i[1]);
+}
+
 }  // namespace fft_detail
 
 }  // namespace mptrack::dsp
