@@ -68,7 +68,7 @@ class Fft {
   static constexpr std::size_t kLog2 = log2_exact(N);
   /// Below this size the wide copies lose (runs shorter than a vector,
   /// 4 x 4 blocks): forward() always runs the baseline copy (measured).
-  static constexpr std::size_t kMinDispatchSize = 64;
+  static constexpr std::size_t kMinDispatchSize = 32;
 
   /// Builds the twiddle and bit-reversal tables. Always kOk; returns a
   /// Status so every component's init() chains the same way.
@@ -207,6 +207,14 @@ class Fft {
         // h = 4 in input order: runs of N/16 >= 16 instead of 4.
         radix4_first(re, im);
         radix4_pass_input_order<4>(re, im);
+#if MPTRACK_FFT_X86_DISPATCH
+        if constexpr (kWide) {  // 8 x 8 blocks in the AVX copies
+          Fused::permute_8x8(re);
+          Fused::permute_8x8(im);
+          radix4_passes<16>(re, im);
+          return;
+        }
+#endif
         Bits::permute(re, im);
         radix4_passes<16>(re, im);
         return;

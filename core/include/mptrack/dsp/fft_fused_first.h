@@ -151,6 +151,32 @@ struct FusedFirst {
     store_rows8(im, m);
   }
 
+  // The bit reversal alone in 8 x 8 blocks (even log2 N >= 8 in the AVX
+  // copies): the same block pairing as radix2_radix4_permute_8x8.
+  MPTRACK_FFT_INLINE static void permute_8x8(float* x) {
+    static_assert(N >= 64, "8 x 8 blocks need N >= 64");
+    constexpr std::size_t kMid = kLog2 - 6;
+    for (std::size_t b = 0; b < N / 64; ++b) {
+      std::size_t rb = 0;
+      for (std::size_t k = 0; k < kMid; ++k) {
+        if ((b >> k) & 1u) rb |= std::size_t{1} << (kMid - 1 - k);
+      }
+      if (rb < b) continue;  // the pair was handled at rb
+      V8 p[8];
+      load_rows8(x + 8 * b, p);
+      transpose8(p);
+      if (rb == b) {
+        store_rows8(x + 8 * b, p);
+        continue;
+      }
+      V8 q[8];
+      load_rows8(x + 8 * rb, q);
+      transpose8(q);
+      store_rows8(x + 8 * rb, p);
+      store_rows8(x + 8 * b, q);
+    }
+  }
+
   MPTRACK_FFT_INLINE static void radix2_radix4_permute_8x8(float* re, float* im,
                                                            const FirstTwiddles& w) {
     static_assert(N >= 128 && kLog2 % 2 == 1, "8 x 8 blocks of an odd log2 N >= 7");
