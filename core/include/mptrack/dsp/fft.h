@@ -48,6 +48,7 @@
 #include "mptrack/dsp/fft_config.h"
 #include "mptrack/dsp/fft_fused_first.h"
 #include "mptrack/dsp/fft_kernels.h"
+#include "mptrack/dsp/fft_register64.h"
 #include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
 #include "mptrack/status.h"
@@ -219,6 +220,12 @@ class Fft {
         radix4_passes<16>(re, im);
         return;
       } else if constexpr (N >= 16) {
+#if MPTRACK_FFT_X86_DISPATCH
+        if constexpr (kWide && N == 64) {  // the whole transform in registers
+          fft_detail::Register64::forward(re, im, tw_re_.data(), tw_im_.data());
+          return;
+        }
+#endif
         Bits::radix4_first_permute(re, im);
         radix4_passes<4>(re, im);
         return;

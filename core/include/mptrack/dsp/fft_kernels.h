@@ -130,13 +130,37 @@ MPTRACK_FFT_INLINE void radix2_values(T& r0, T& i0, T& r1, T& i1) {
   i0 = i0 + ti;
 }
 
+/// The multiply-free first radix-2^2 butterfly of radix4_first_run on one
+/// set of values (a float or a GCC vector of lanes): the same operations in
+/// the same order.
+template <class T>
+MPTRACK_FFT_INLINE void radix4_first_values(T& r0, T& i0, T& r1, T& i1, T& r2, T& i2, T& r3,
+                                            T& i3) {
+  const T b0r = r0 + r1;
+  const T b0i = i0 + i1;
+  const T b1r = r0 - r1;
+  const T b1i = i0 - i1;
+  const T b2r = r2 + r3;
+  const T b2i = i2 + i3;
+  const T b3r = r2 - r3;
+  const T b3i = i2 - i3;
+  r0 = b0r + b2r;
+  i0 = b0i + b2i;
+  r2 = b0r - b2r;
+  i2 = b0i - b2i;
+  r1 = b1r + b3i;  // -j * b3 = (b3i, -b3r)
+  i1 = b1i - b3r;
+  r3 = b1r - b3i;
+  i3 = b1i + b3r;
+}
+
 /// The radix-2^2 butterfly of radix4_run on one set of values (a float or
 /// a GCC vector of lanes), twiddles w1 = W_{2h}^j, w2 = W_{4h}^j (W: float,
 /// which GCC broadcasts to every lane without arithmetic, or T): the same
 /// operations in the same order as radix4_run's loop body.
 template <class T, class W>
 MPTRACK_FFT_INLINE void radix4_values(T& r0, T& i0, T& r1, T& i1, T& r2, T& i2, T& r3, T& i3,
-                                      W a1r, W a1i, W a2r, W a2i) {
+                                      const W& a1r, const W& a1i, const W& a2r, const W& a2i) {
   const T t1r = a1r * r1 - a1i * i1;
   const T t1i = a1r * i1 + a1i * r1;
   const T t3r = a1r * r3 - a1i * i3;
