@@ -167,7 +167,7 @@ class Fft {
   }
   __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) void forward_avx512(
       float* re, float* im) const {
-    forward_schedule<true>(re, im);
+    forward_schedule<true, true>(re, im);
   }
 #endif
 
@@ -175,7 +175,7 @@ class Fft {
   // runs of N/(4h)) and which after (natural order, runs of h) is chosen
   // per size for run length (measured, bench/README.md); every choice
   // performs the same operations per element.
-  template <bool kWide>
+  template <bool kWide, bool kZmm = false>
   MPTRACK_FFT_INLINE void forward_schedule(float* re, float* im) const {
     if constexpr (kLog2 % 2 == 1) {
       if constexpr (N >= 32) {
@@ -187,6 +187,11 @@ class Fft {
         }
 #endif
 #if MPTRACK_FFT_X86_DISPATCH
+        if constexpr (kZmm && N == 128) {  // one 8 x 16 block in the AVX-512 copy
+          Fused::radix2_radix4_permute_128(re, im, first_twiddles());
+          radix4_passes<8>(re, im);
+          return;
+        }
         if constexpr (kWide && N >= 128) {  // 8 x 8 blocks in the AVX copies
           Fused::radix2_radix4_permute_8x8(re, im, first_twiddles());
           radix4_passes<8>(re, im);
@@ -221,6 +226,10 @@ class Fft {
         return;
       } else if constexpr (N >= 16) {
 #if MPTRACK_FFT_X86_DISPATCH
+        if constexpr (kZmm && N == 64) {  // the whole transform in 16-float registers
+          fft_detail::Register64Zmm::forward(re, im, tw_re_.data(), tw_im_.data());
+          return;
+        }
         if constexpr (kWide && N == 64) {  // the whole transform in registers
           fft_detail::Register64::forward(re, im, tw_re_.data(), tw_im_.data());
           return;

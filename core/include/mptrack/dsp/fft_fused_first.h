@@ -199,6 +199,80 @@ struct FusedFirst {
       store_block8(re + 8 * b, im + 8 * b, qr, qm);
     }
   }
+  // N = 128, only in the AVX-512 copy: the eight rows (stride N/8 = 16) are
+  // one 16-float register each. i = 16 a + c has rev(i) = 8 r4(c) + r3(a),
+  // so output rows 2 k, 2 k + 1 (one register at 16 k) are input columns
+  // r3(k) and 8 + r3(k) read down the rows r3(0..7): transpose8's shuffles
+  // on each 128-bit lane (columns 0..7 and 8..15 at once), then the lanes
+  // paired as [c | c + 8]. One block, in place.
+  using V16 = float __attribute__((vector_size(64)));
+  using M16 = std::int32_t __attribute__((vector_size(64)));
+  MPTRACK_FFT_INLINE static void load16(V16& v, const float* p) { std::memcpy(&v, p, sizeof v); }
+  MPTRACK_FFT_INLINE static void store16(float* p, const V16& v) { std::memcpy(p, &v, sizeof v); }
+  MPTRACK_FFT_INLINE static void transpose8x16(V16 (&v)[8]) {
+    constexpr M16 kLo{0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29};
+    constexpr M16 kHi{2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31};
+    constexpr M16 k44{0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29};
+    constexpr M16 kEe{2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31};
+    constexpr M16 kC0{0, 1, 2, 3, 16, 17, 18, 19, 8, 9, 10, 11, 24, 25, 26, 27};
+    constexpr M16 kC4{4, 5, 6, 7, 20, 21, 22, 23, 12, 13, 14, 15, 28, 29, 30, 31};
+    const V16 t0 = __builtin_shuffle(v[0], v[4], kLo);
+    const V16 t1 = __builtin_shuffle(v[0], v[4], kHi);
+    const V16 t2 = __builtin_shuffle(v[2], v[6], kLo);
+    const V16 t3 = __builtin_shuffle(v[2], v[6], kHi);
+    const V16 t4 = __builtin_shuffle(v[1], v[5], kLo);
+    const V16 t5 = __builtin_shuffle(v[1], v[5], kHi);
+    const V16 t6 = __builtin_shuffle(v[3], v[7], kLo);
+    const V16 t7 = __builtin_shuffle(v[3], v[7], kHi);
+    const V16 s0 = __builtin_shuffle(t0, t2, k44);
+    const V16 s1 = __builtin_shuffle(t0, t2, kEe);
+    const V16 s2 = __builtin_shuffle(t1, t3, k44);
+    const V16 s3 = __builtin_shuffle(t1, t3, kEe);
+    const V16 s4 = __builtin_shuffle(t4, t6, k44);
+    const V16 s5 = __builtin_shuffle(t4, t6, kEe);
+    const V16 s6 = __builtin_shuffle(t5, t7, k44);
+    const V16 s7 = __builtin_shuffle(t5, t7, kEe);
+    v[0] = __builtin_shuffle(s0, s4, kC0);  // columns 0 | 8
+    v[4] = __builtin_shuffle(s1, s5, kC0);  // 1 | 9
+    v[2] = __builtin_shuffle(s2, s6, kC0);  // 2 | 10
+    v[6] = __builtin_shuffle(s3, s7, kC0);  // 3 | 11
+    v[1] = __builtin_shuffle(s0, s4, kC4);  // 4 | 12
+    v[5] = __builtin_shuffle(s1, s5, kC4);  // 5 | 13
+    v[3] = __builtin_shuffle(s2, s6, kC4);  // 6 | 14
+    v[7] = __builtin_shuffle(s3, s7, kC4);  // 7 | 15
+  }
+  MPTRACK_FFT_INLINE static void load_rows16(const float* x, V16 (&v)[8]) {
+    load16(v[0], x);
+    load16(v[1], x + 16);
+    load16(v[2], x + 32);
+    load16(v[3], x + 48);
+    load16(v[4], x + 64);
+    load16(v[5], x + 80);
+    load16(v[6], x + 96);
+    load16(v[7], x + 112);
+  }
+  MPTRACK_FFT_INLINE static void store_rows16(float* x, const V16 (&v)[8]) {
+    store16(x, v[0]);
+    store16(x + 16, v[1]);
+    store16(x + 32, v[2]);
+    store16(x + 48, v[3]);
+    store16(x + 64, v[4]);
+    store16(x + 80, v[5]);
+    store16(x + 96, v[6]);
+    store16(x + 112, v[7]);
+  }
+  MPTRACK_FFT_INLINE static void radix2_radix4_permute_128(float* re, float* im,
+                                                           const FirstTwiddles& w) {
+    static_assert(N == 128, "the 8 x 16 block is the whole transform only at N = 128");
+    V16 r[8], m[8];
+    load_rows16(re, r);
+    load_rows16(im, m);
+    radix2_radix4_rows(r, m, w);
+    transpose8x16(r);
+    transpose8x16(m);
+    store_rows16(re, r);
+    store_rows16(im, m);
+  }
 #endif
 };
 
