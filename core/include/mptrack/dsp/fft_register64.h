@@ -99,6 +99,18 @@ struct Register64Zmm {
 
   MPTRACK_FFT_INLINE static void load16(V16& v, const float* p) { std::memcpy(&v, p, sizeof v); }
   MPTRACK_FFT_INLINE static void store16(float* p, const V16& v) { std::memcpy(p, &v, sizeof v); }
+  MPTRACK_FFT_INLINE static void load4x16(const float* x, V16 (&v)[4]) {
+    load16(v[0], x);
+    load16(v[1], x + 16);
+    load16(v[2], x + 32);
+    load16(v[3], x + 48);
+  }
+  MPTRACK_FFT_INLINE static void store4x16(float* x, const V16 (&v)[4]) {
+    store16(x, v[0]);
+    store16(x + 16, v[1]);
+    store16(x + 32, v[2]);
+    store16(x + 48, v[3]);
+  }
 
   // Input order A_q = slots 16 q .. 16 q + 15 (after radix4_first) to the
   // operands of radix4_pass<4>: R_k lane 4 g + i = natural slot 16 g + 4 k +
@@ -149,11 +161,9 @@ struct Register64Zmm {
 
   MPTRACK_FFT_INLINE static void forward(float* re, float* im, const float* tw_re,
                                          const float* tw_im) {
-    V16 ar[4], am[4];
-    for (std::size_t q = 0; q < 4; ++q) {
-      load16(ar[q], re + 16 * q);
-      load16(am[q], im + 16 * q);
-    }
+    V16 ar[4], am[4];  // constant indices only: kept in registers
+    load4x16(re, ar);
+    load4x16(im, am);
     // radix4_first in input order: p0, p1, p2, p3 = slots r, r + 32, r + 16, r + 48.
     radix4_first_values(ar[0], am[0], ar[2], am[2], ar[1], am[1], ar[3], am[3]);
     V16 rr[4], rm[4];
@@ -172,10 +182,8 @@ struct Register64Zmm {
     load16(w2r, tw_re + 31);  // W_64^j
     load16(w2i, tw_im + 31);
     radix4_values(ar[0], am[0], ar[1], am[1], ar[2], am[2], ar[3], am[3], w1r, w1i, w2r, w2i);
-    for (std::size_t q = 0; q < 4; ++q) {
-      store16(re + 16 * q, ar[q]);
-      store16(im + 16 * q, am[q]);
-    }
+    store4x16(re, ar);
+    store4x16(im, am);
   }
 };
 #endif
