@@ -56,6 +56,9 @@
 namespace mptrack::dsp {
 
 
+/// The copies of the FFT schedule a build may hold (Fft::forward_copy).
+enum class FftCopy { kBaseline, kAvx2, kAvx512 };
+
 /// Radix-2^2 FFT of fixed length N (a power of two, 2..65536).
 /// Footprint: 2 N floats of twiddles per object; the bit-reversal swap list
 /// (about N 16-bit indices) is a static constexpr table, in rodata/flash.
@@ -129,6 +132,30 @@ class Fft {
   /// (SSE2 on x86-64). For tests that prove every dispatch path gives the
   /// same bits.
   void forward_portable(float* re, float* im) const { forward_schedule<false>(re, im); }
+
+  /// Runs one copy of the schedule whatever forward() would pick (any N),
+  /// for tests that prove every copy gives the same bits, e.g. the AVX2
+  /// copy on an AVX-512 host. False (nothing done) when this build or this
+  /// CPU does not have that copy.
+  bool forward_copy(FftCopy copy, float* re, float* im) const {
+    switch (copy) {
+      case FftCopy::kBaseline:
+        forward_schedule<false>(re, im);
+        return true;
+#if MPTRACK_FFT_X86_DISPATCH
+      case FftCopy::kAvx2:
+        if (!__builtin_cpu_supports("avx2")) return false;
+        forward_avx2(re, im);
+        return true;
+      case FftCopy::kAvx512:
+        if (!__builtin_cpu_supports("avx512f") || !__builtin_cpu_supports("avx512vl")) return false;
+        forward_avx512(re, im);
+        return true;
+#endif
+      default:
+        return false;
+    }
+  }
 
   /// Which copy forward() runs on this CPU: "avx512", "avx2" or "baseline".
   static const char* dispatch_name() {
