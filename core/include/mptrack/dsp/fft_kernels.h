@@ -13,113 +13,14 @@ namespace mptrack::dsp {
 
 namespace fft_detail {
 
-// Butterfly kernels over runs of kLen elements. The no-alias facts are
-// __restrict FUNCTION PARAMETERS: GCC keeps those when it inlines the
-// kernel into a pass (the dispatch copies inline everything), whereas
-// __restrict local variables lose them and the loops stop vectorising.
-// Each is the exact per-element operation sequence of the DIT radix-2 /
-// radix-2^2 butterfly (see Fft); only the schedule differs between users.
+// The butterflies on one set of values (*_values: a float, or a GCC vector
+// whose lanes each see the same operations), the only place where the
+// per-element operation sequence of the DIT radix-2 / radix-2^2 butterfly
+// is written; every schedule (the loops below, the register blocks of
+// fft_fused_first.h and fft_register64.h) calls them, so only the schedule
+// differs between users.
 
-/// Radix-2, twiddle 1: (a, b) -> (a + b, a - b).
-template <std::size_t kLen>
-MPTRACK_FFT_INLINE void radix2_run(float* __restrict r0, float* __restrict i0,
-                                   float* __restrict r1, float* __restrict i1) {
-  MPTRACK_FFT_NO_UNROLL
-  for (std::size_t r = 0; r < kLen; ++r) {
-    const float tr = r1[r];
-    const float ti = i1[r];
-    r1[r] = r0[r] - tr;
-    i1[r] = i0[r] - ti;
-    r0[r] = r0[r] + tr;
-    i0[r] = i0[r] + ti;
-  }
-}
-
-/// Half-sizes 1 and 2 fused (twiddles 1 and -j): no multiplies.
-template <std::size_t kLen>
-MPTRACK_FFT_INLINE void radix4_first_run(float* __restrict r0, float* __restrict i0,
-                                         float* __restrict r1, float* __restrict i1,
-                                         float* __restrict r2, float* __restrict i2,
-                                         float* __restrict r3, float* __restrict i3) {
-  MPTRACK_FFT_NO_UNROLL
-  for (std::size_t r = 0; r < kLen; ++r) {
-    const float b0r = r0[r] + r1[r];
-    const float b0i = i0[r] + i1[r];
-    const float b1r = r0[r] - r1[r];
-    const float b1i = i0[r] - i1[r];
-    const float b2r = r2[r] + r3[r];
-    const float b2i = i2[r] + i3[r];
-    const float b3r = r2[r] - r3[r];
-    const float b3i = i2[r] - i3[r];
-    r0[r] = b0r + b2r;
-    i0[r] = b0i + b2i;
-    r2[r] = b0r - b2r;
-    i2[r] = b0i - b2i;
-    // -j * b3 = (b3i, -b3r)
-    r1[r] = b1r + b3i;
-    i1[r] = b1i - b3r;
-    r3[r] = b1r - b3i;
-    i3[r] = b1i + b3r;
-  }
-}
-
-/// Two radix-2 stages (half-sizes h, 2h) fused: operands a0..a3 at
-/// r0..r3, twiddles W_{2h}^j (w1) and W_{4h}^j (w2), the odd pair's second
-/// twiddle -j w2 applied as a swap. W is float* (one twiddle per element)
-/// or float (one twiddle for the whole run).
-template <std::size_t kLen, class W>
-MPTRACK_FFT_INLINE void radix4_run(float* __restrict r0, float* __restrict i0,
-                                   float* __restrict r1, float* __restrict i1,
-                                   float* __restrict r2, float* __restrict i2,
-                                   float* __restrict r3, float* __restrict i3, W w1r, W w1i,
-                                   W w2r, W w2i) {
-  constexpr bool kPerElement = !std::is_same<W, float>::value;
-  MPTRACK_FFT_NO_UNROLL
-  for (std::size_t j = 0; j < kLen; ++j) {
-    float a1r, a1i, a2r, a2i;  // w1, w2 of this element
-    if constexpr (kPerElement) {
-      a1r = w1r[j];
-      a1i = w1i[j];
-      a2r = w2r[j];
-      a2i = w2i[j];
-    } else {
-      a1r = w1r;
-      a1i = w1i;
-      a2r = w2r;
-      a2i = w2i;
-    }
-    // Stage h: (a0, a1) and (a2, a3) with w1.
-    const float t1r = a1r * r1[j] - a1i * i1[j];
-    const float t1i = a1r * i1[j] + a1i * r1[j];
-    const float t3r = a1r * r3[j] - a1i * i3[j];
-    const float t3i = a1r * i3[j] + a1i * r3[j];
-    const float b0r = r0[j] + t1r;
-    const float b0i = i0[j] + t1i;
-    const float b1r = r0[j] - t1r;
-    const float b1i = i0[j] - t1i;
-    const float b2r = r2[j] + t3r;
-    const float b2i = i2[j] + t3i;
-    const float b3r = r2[j] - t3r;
-    const float b3i = i2[j] - t3i;
-    // Stage 2h: (b0, b2) with w2, (b1, b3) with -j w2.
-    const float u2r = a2r * b2r - a2i * b2i;
-    const float u2i = a2r * b2i + a2i * b2r;
-    const float u3r = a2r * b3r - a2i * b3i;
-    const float u3i = a2r * b3i + a2i * b3r;
-    r0[j] = b0r + u2r;
-    i0[j] = b0i + u2i;
-    r2[j] = b0r - u2r;
-    i2[j] = b0i - u2i;
-    // -j * u3 = (u3i, -u3r)
-    r1[j] = b1r + u3i;
-    i1[j] = b1i - u3r;
-    r3[j] = b1r - u3i;
-    i3[j] = b1i + u3r;
-  }
-}
-
-/// The radix-2 butterfly of radix2_run on one set of values (a float or a
-/// GCC vector of lanes): the same operations in the same order.
+/// Radix 2, twiddle 1: (a, b) -> (a + b, a - b).
 template <class T>
 MPTRACK_FFT_INLINE void radix2_values(T& r0, T& i0, T& r1, T& i1) {
   const T tr = r1;
@@ -130,9 +31,7 @@ MPTRACK_FFT_INLINE void radix2_values(T& r0, T& i0, T& r1, T& i1) {
   i0 = i0 + ti;
 }
 
-/// The multiply-free first radix-2^2 butterfly of radix4_first_run on one
-/// set of values (a float or a GCC vector of lanes): the same operations in
-/// the same order.
+/// Half-sizes 1 and 2 fused (twiddles 1 and -j): no multiplies.
 template <class T>
 MPTRACK_FFT_INLINE void radix4_first_values(T& r0, T& i0, T& r1, T& i1, T& r2, T& i2, T& r3,
                                             T& i3) {
@@ -154,10 +53,10 @@ MPTRACK_FFT_INLINE void radix4_first_values(T& r0, T& i0, T& r1, T& i1, T& r2, T
   i3 = b1i + b3r;
 }
 
-/// The radix-2^2 butterfly of radix4_run on one set of values (a float or
-/// a GCC vector of lanes), twiddles w1 = W_{2h}^j, w2 = W_{4h}^j (W: float,
-/// which GCC broadcasts to every lane without arithmetic, or T): the same
-/// operations in the same order as radix4_run's loop body.
+/// Two radix-2 stages (half-sizes h, 2h) fused: operands a0..a3, twiddles
+/// w1 = W_{2h}^j, w2 = W_{4h}^j (W: float, which GCC broadcasts to every
+/// lane without arithmetic, or T); the odd pair's second twiddle -j w2 is
+/// applied as a swap.
 template <class T, class W>
 MPTRACK_FFT_INLINE void radix4_values(T& r0, T& i0, T& r1, T& i1, T& r2, T& i2, T& r3, T& i3,
                                       const W& a1r, const W& a1i, const W& a2r, const W& a2i) {
@@ -185,6 +84,53 @@ MPTRACK_FFT_INLINE void radix4_values(T& r0, T& i0, T& r1, T& i1, T& r2, T& i2, 
   i1 = b1i - u3r;
   r3 = b1r - u3i;
   i3 = b1i + u3r;
+}
+
+// The same over runs of kLen elements. The no-alias facts are __restrict
+// FUNCTION PARAMETERS: GCC keeps those when it inlines the kernel into a
+// pass (the dispatch copies inline everything), whereas __restrict local
+// variables lose them and the loops stop vectorising.
+
+/// radix2_values over a run.
+template <std::size_t kLen>
+MPTRACK_FFT_INLINE void radix2_run(float* __restrict r0, float* __restrict i0,
+                                   float* __restrict r1, float* __restrict i1) {
+  MPTRACK_FFT_NO_UNROLL
+  for (std::size_t r = 0; r < kLen; ++r) radix2_values(r0[r], i0[r], r1[r], i1[r]);
+}
+
+/// radix4_first_values over a run.
+template <std::size_t kLen>
+MPTRACK_FFT_INLINE void radix4_first_run(float* __restrict r0, float* __restrict i0,
+                                         float* __restrict r1, float* __restrict i1,
+                                         float* __restrict r2, float* __restrict i2,
+                                         float* __restrict r3, float* __restrict i3) {
+  MPTRACK_FFT_NO_UNROLL
+  for (std::size_t r = 0; r < kLen; ++r) {
+    radix4_first_values(r0[r], i0[r], r1[r], i1[r], r2[r], i2[r], r3[r], i3[r]);
+  }
+}
+
+/// Two radix-2 stages (half-sizes h, 2h) fused: operands a0..a3 at
+/// r0..r3, twiddles W_{2h}^j (w1) and W_{4h}^j (w2), the odd pair's second
+/// twiddle -j w2 applied as a swap. W is float* (one twiddle per element)
+/// or float (one twiddle for the whole run).
+template <std::size_t kLen, class W>
+MPTRACK_FFT_INLINE void radix4_run(float* __restrict r0, float* __restrict i0,
+                                   float* __restrict r1, float* __restrict i1,
+                                   float* __restrict r2, float* __restrict i2,
+                                   float* __restrict r3, float* __restrict i3, W w1r, W w1i,
+                                   W w2r, W w2i) {
+  constexpr bool kPerElement = !std::is_same<W, float>::value;
+  MPTRACK_FFT_NO_UNROLL
+  for (std::size_t j = 0; j < kLen; ++j) {
+    if constexpr (kPerElement) {
+      radix4_values(r0[j], i0[j], r1[j], i1[j], r2[j], i2[j], r3[j], i3[j], w1r[j], w1i[j],
+                    w2r[j], w2i[j]);
+    } else {
+      radix4_values(r0[j], i0[j], r1[j], i1[j], r2[j], i2[j], r3[j], i3[j], w1r, w1i, w2r, w2i);
+    }
+  }
 }
 
 /// Twiddles of the half-size-2 stage pair (h = 2, 4) for j = 0, 1:
