@@ -21,8 +21,11 @@
 // the input order before the bit reversal (unit-stride runs instead of
 // stride-2/4 gathers, see radix2_first); on SSE2/AArch64 the bit reversal
 // is a blocked 4 x 4 transpose, fused with the first radix-4 stage for
-// even log2 N < 8; on x86-64 hosts forward() runs the same schedule
-// compiled for AVX-512 or AVX2 when the CPU has them (N >= 64; no FMA).
+// even log2 N < 8 and with the first two stages at N = 32
+// (fft_fused_first.h); on x86-64 hosts forward() runs the same schedule
+// compiled for AVX-512 or AVX2 when the CPU has them (N >= 32; no FMA),
+// where the bit reversal uses 8 x 8 (8 x 16) register blocks fused with the
+// first stages and N = 64 stays in registers (fft_register64.h).
 // Each output element still sees the same operations on the same operands
 // in the same order; -ffp-contract=off keeps vector and scalar builds from
 // fusing anything, so tests/golden/data/frontend_*.golden match unchanged
