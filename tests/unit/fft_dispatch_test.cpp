@@ -46,9 +46,11 @@ bool same(const std::vector<float>& a, const std::vector<float>& b) {
   return true;
 }
 
-// Trials whose forward() and forward_portable() outputs differ in any bit.
+// Trials whose outputs differ in any bit between forward_portable() and
+// the copy `copy` (forward(), the copy this CPU dispatches to, when
+// copy_arg is false; else Fft::forward_copy(copy)). -1: copy not on this CPU.
 template <std::size_t N>
-int mismatches() {
+int mismatches(bool copy_arg = false, mptrack::dsp::FftCopy copy = mptrack::dsp::FftCopy::kBaseline) {
   auto fft = std::make_unique<mptrack::dsp::Fft<N>>();
   REQUIRE(fft->init() == mptrack::Status::kOk);
   std::vector<float> re(N), im(N), pre(N), pim(N);
@@ -61,11 +63,32 @@ int mismatches() {
     }
     pre = re;
     pim = im;
-    fft->forward(re.data(), im.data());
+    if (copy_arg) {
+      if (!fft->forward_copy(copy, re.data(), im.data())) return -1;
+    } else {
+      fft->forward(re.data(), im.data());
+    }
     fft->forward_portable(pre.data(), pim.data());
     if (!same(re, pre) || !same(im, pim)) {
       ++bad;
     }
+  }
+  return bad;
+}
+
+// Every size 2..4096 through one named copy; mismatching sizes, or -1 when
+// this CPU lacks the copy.
+int copy_mismatches(mptrack::dsp::FftCopy c) {
+  const int results[] = {mismatches<2>(true, c),    mismatches<4>(true, c),
+                         mismatches<8>(true, c),    mismatches<16>(true, c),
+                         mismatches<32>(true, c),   mismatches<64>(true, c),
+                         mismatches<128>(true, c),  mismatches<256>(true, c),
+                         mismatches<512>(true, c),  mismatches<1024>(true, c),
+                         mismatches<2048>(true, c), mismatches<4096>(true, c)};
+  int bad = 0;
+  for (const int r : results) {
+    if (r < 0) return -1;
+    if (r > 0) ++bad;
   }
   return bad;
 }
@@ -89,13 +112,43 @@ TEST_CASE("fft dispatch: the AVX copies give the bits of the baseline copy, N = 
 }
 
 TEST_CASE("fft dispatch: sizes below kMinDispatchSize always run the baseline copy") {
-  CHECK(std::string(mptrack::dsp::Fft<32>::dispatch_name()) == "baseline");
+  static_assert(mptrack::dsp::Fft<32>::kMinDispatchSize == 32, "the test names the boundary");
   CHECK(std::string(mptrack::dsp::Fft<16>::dispatch_name()) == "baseline");
+  CHECK(std::string(mptrack::dsp::Fft<8>::dispatch_name()) == "baseline");
+}
+
+// The AVX2 copy has its own register schedules (N = 64 in 8-float rows, 8 x 8
+// blocks from N = 128) that forward() never runs on an AVX-512 host, and the
+// AVX-512 copy others (N = 64 and 128 in 16-float registers): each copy is
+// run by name here, at every size, against the baseline copy.
+TEST_CASE("fft dispatch: the baseline copy run by name is forward_portable()") {
+  CHECK(copy_mismatches(mptrack::dsp::FftCopy::kBaseline) == 0);
 }
 
 #if MPTRACK_FFT_X86_DISPATCH
-TEST_CASE("fft dispatch: on an AVX2 host, N >= 64 runs a wide copy (the test above compares it)") {
+TEST_CASE("fft dispatch: the AVX2 copy run by name gives the baseline bits, N = 2..4096") {
+  const int bad = copy_mismatches(mptrack::dsp::FftCopy::kAvx2);
   if (__builtin_cpu_supports("avx2")) {
+    CHECK(bad == 0);
+  } else {
+    CHECK(bad == -1);
+  }
+}
+
+TEST_CASE("fft dispatch: the AVX-512 copy run by name gives the baseline bits, N = 2..4096") {
+  const int bad = copy_mismatches(mptrack::dsp::FftCopy::kAvx512);
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
+    CHECK(bad == 0);
+  } else {
+    CHECK(bad == -1);
+  }
+}
+#endif
+
+#if MPTRACK_FFT_X86_DISPATCH
+TEST_CASE("fft dispatch: on an AVX2 host, N >= 32 runs a wide copy (the test above compares it)") {
+  if (__builtin_cpu_supports("avx2")) {
+    CHECK(std::string(mptrack::dsp::Fft<32>::dispatch_name()) != "baseline");
     CHECK(std::string(mptrack::dsp::Fft<64>::dispatch_name()) != "baseline");
     CHECK(std::string(mptrack::dsp::Fft<256>::dispatch_name()) != "baseline");
   } else {

@@ -1,0 +1,62 @@
+// Build configuration of the FFT (fft.h): which vector paths and which x86
+// dispatch copies exist on this target, and the compile-time size helpers.
+// Data movement and code generation only: no macro here changes an operation.
+#pragma once
+
+#include <cstddef>
+
+// Vector bit reversal where GCC's generic vectors map to real SIMD
+// registers (SSE2, AArch64 NEON); elsewhere (Cortex-M, 32-bit Arm) the
+// scalar swap list. Data movement only: no effect on any bit of the result.
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__SSE2__) || defined(__aarch64__))
+#define MPTRACK_FFT_VECTOR_PERMUTE 1
+#else
+#define MPTRACK_FFT_VECTOR_PERMUTE 0
+#endif
+
+// Run-time ISA dispatch on x86-64 Linux hosts built with GCC: forward()
+// runs the same schedule compiled for AVX-512 or AVX2 (never FMA) when
+// the CPU supports it. Define MPTRACK_FFT_X86_DISPATCH=0 to build only the
+// baseline (SSE2) copy. Targets (aarch64, armhf, Cortex-M) have one copy.
+#ifndef MPTRACK_FFT_X86_DISPATCH
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define MPTRACK_FFT_X86_DISPATCH 1
+#else
+#define MPTRACK_FFT_X86_DISPATCH 0
+#endif
+#endif
+
+// The butterfly loops must reach the loop vectoriser, which keeps the
+// __restrict facts: GCC otherwise unrolls short constant-trip loops (4, 8)
+// completely first, and its straight-line (SLP) vectoriser then gives up on
+// possible aliasing and emits scalar stores that stall the next pass's
+// vector loads (measured: N = 32 three times slower behind a call).
+// Only where the loops are vectorised (SSE2, AArch64); scalar targets
+// (Cortex-M, armhf) keep GCC's complete unrolling.
+#if MPTRACK_FFT_VECTOR_PERMUTE
+#define MPTRACK_FFT_NO_UNROLL _Pragma("GCC unroll 1")
+#else
+#define MPTRACK_FFT_NO_UNROLL
+#endif
+
+// Every pass is force-inlined into forward_schedule(), so each dispatch
+// copy compiles the whole schedule for its own ISA.
+#if MPTRACK_FFT_X86_DISPATCH
+#define MPTRACK_FFT_INLINE __attribute__((always_inline)) inline
+#else
+#define MPTRACK_FFT_INLINE inline
+#endif
+
+namespace mptrack::dsp {
+
+/// Compile-time check: n is a power of two >= 2.
+constexpr bool is_power_of_two(std::size_t n) { return n >= 2 && (n & (n - 1)) == 0; }
+
+/// log2 of a power of two.
+constexpr std::size_t log2_exact(std::size_t n) {
+  std::size_t l = 0;
+  while ((std::size_t{1} << l) < n) ++l;
+  return l;
+}
+
+}  // namespace mptrack::dsp
