@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -29,6 +30,40 @@ using Tracker = MfbpTracker<double, DefaultCaps>;
 using Nemp = mfbp::NempState<double, DefaultCaps>;
 using Evidence = mfbp::ScanEvidence<DefaultCaps::kMaxMeasurements>;
 constexpr std::size_t kF = classify::kNumFeatures;
+
+/// The sea defaults of NEMP (docs/algorithms/nemp.md §Sea settings).
+mfbp::NempParams<double> sea_nemp_params() {
+  mfbp::NempParams<double> np;
+  return np;
+}
+
+/// `--mfbp-param nemp.NAME=VALUE` (rounds, nn_reliability,
+/// birth_min_target_prob); other names are MfbpParams' and skipped here.
+std::string apply_nemp_params(mfbp::NempParams<double>& np, const std::vector<std::string>& overrides) {
+  for (const std::string& kv : overrides) {
+    const std::size_t eq = kv.find('=');
+    if (kv.rfind("nemp.", 0) != 0 || eq == std::string::npos) continue;
+    const std::string name = kv.substr(5, eq - 5);
+    const std::string text = kv.substr(eq + 1);
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || end == nullptr || *end != '\0') return "--mfbp-param nemp." + name + ": not a number";
+    if (name == "rounds" && v >= 1.0 && v <= 8.0 && v == static_cast<double>(static_cast<std::size_t>(v))) {
+      np.rounds = static_cast<std::size_t>(v);
+    } else if (name == "nn_reliability") {
+      np.nn_reliability = v;
+    } else if (name == "nn_log_odds_gain") {
+      np.nn_log_odds_gain = v;
+    } else if (name == "nn_max_target_prob") {
+      np.nn_max_target_prob = v;
+    } else if (name == "birth_min_target_prob") {
+      np.birth_min_target_prob = v;
+    } else {
+      return "--mfbp-param nemp." + name + ": unknown or out of range (rounds 1..8, nn_reliability, nn_log_odds_gain, nn_max_target_prob, birth_min_target_prob)";
+    }
+  }
+  return "";
+}
 
 class NempAdapter final : public TrackerAdapter {
  public:
@@ -61,7 +96,10 @@ class NempAdapter final : public TrackerAdapter {
     if (!error.empty()) return error;
     if (tracker_->init(p) != Status::kOk) return "MF-BP init failed";
     if (variant_ == "nemp") {
-      if (nemp_->init(classifier_.get(), mfbp::NempParams<double>{}) != Status::kOk) return "NEMP init failed";
+      mfbp::NempParams<double> np = sea_nemp_params();
+      const std::string nemp_error = apply_nemp_params(np, setup.mfbp_params);
+      if (!nemp_error.empty()) return nemp_error;
+      if (nemp_->init(classifier_.get(), np) != Status::kOk) return "NEMP init failed (nemp.* parameters out of range?)";
       if (tracker_->attach_nemp(nemp_.get()) != Status::kOk) return "NEMP attach failed";
     }
     return "";
