@@ -61,3 +61,13 @@ TEST_CASE("DS fusion: clutter log-factor turns p_FG into BetP and is 0 when they
   // certainties are clamped: finite
   CHECK(std::isfinite(cl::clutter_log_factor(0.0, 1.0)));
 }
+
+TEST_CASE("DS fusion: log-odds gain by hand, identity at gain 1 and at w = 0.5") {
+  // w = 0.75 is odds 3; gain 2 -> odds 9 -> 0.9; gain 0.5 -> odds sqrt(3)
+  CHECK(cl::scale_log_odds(0.75, 2.0) == doctest::Approx(0.9).epsilon(1e-12));
+  CHECK(cl::scale_log_odds(0.75, 0.5) == doctest::Approx(std::sqrt(3.0) / (1.0 + std::sqrt(3.0))).epsilon(1e-12));
+  // w = 0.25 (odds 1/3), gain 2 -> odds 1/9 -> 0.1
+  CHECK(cl::scale_log_odds(0.25, 2.0) == doctest::Approx(0.1).epsilon(1e-12));
+  CHECK(cl::scale_log_odds(0.3f, 1.0f) == 0.3f);
+  CHECK(cl::scale_log_odds(0.5f, 3.0f) == 0.5f);
+}

@@ -76,7 +76,7 @@ struct RunResult {
 /// 30 scans of the seed 000 two-target scene (tests/unit/mfbp_scenario.h),
 /// window 7 / slide 3; nemp == nullptr: plain MF-BP; with_patches: every
 /// detection carries (zero) features.
-RunResult run_scene(Nemp* nemp, bool with_patches) {
+RunResult run_scene(Nemp* nemp, bool with_patches, std::uint64_t* born = nullptr) {
   auto trk = std::make_unique<Tracker>();
   MfbpParams<float> p = seed000_default_params<float>();
   p.window_length = 7;
@@ -98,6 +98,7 @@ RunResult run_scene(Nemp* nemp, bool with_patches) {
   REQUIRE(trk->flush() == Status::kOk);
   record(*trk, r.bits);
   r.bp_runs = trk->bp_runs();
+  if (born != nullptr) *born = trk->counters().tracks_born;
   return r;
 }
 
@@ -132,6 +133,72 @@ TEST_CASE("NEMP off, no patches, or w = 0.5 everywhere: MF-BP output bit-identic
   // and no extra BP runs: a round that changes no factor stops the loop
   CHECK(no_patch.bp_runs == plain.bp_runs);
   CHECK(half.bp_runs == plain.bp_runs);
+}
+
+/// The sea settings of the nemp adapter (docs/algorithms/nemp.md §Sea
+/// settings): clutter side only, log-odds gain 2, birth veto at 0.5.
+mfbp::NempParams<float> sea_like_params() {
+  mfbp::NempParams<float> p;
+  p.nn_log_odds_gain = 2.0f;
+  p.nn_max_target_prob = 0.5f;
+  p.birth_min_target_prob = 0.5f;
+  return p;
+}
+
+TEST_CASE("NEMP with the sea settings and w = 0.5 everywhere: MF-BP output bit-identical") {
+  const RunResult plain = run_scene(nullptr, false);
+  auto neutral = std::make_unique<ConstantHead>(0.0f);
+  auto nemp = std::make_unique<Nemp>();
+  REQUIRE(nemp->init(&neutral->classifier, sea_like_params()) == Status::kOk);
+  const RunResult half = run_scene(nemp.get(), true);
+  CHECK(half.bits == plain.bits);
+  CHECK(half.bp_runs == plain.bp_runs);
+}
+
+TEST_CASE("NEMP birth veto: detections the classifier calls clutter start no track") {
+  std::uint64_t born_plain = 0, born_vetoed = 0, born_off = 0;
+  (void)run_scene(nullptr, false, &born_plain);
+  REQUIRE(born_plain > 0u);
+  auto clutterish = std::make_unique<ConstantHead>(-3.0f);  // w = 0.047 < 0.5 everywhere
+  auto nemp = std::make_unique<Nemp>();
+  mfbp::NempParams<float> p;
+  p.birth_min_target_prob = 0.5f;
+  REQUIRE(nemp->init(&clutterish->classifier, p) == Status::kOk);
+  (void)run_scene(nemp.get(), true, &born_vetoed);
+  CHECK(born_vetoed == 0u);
+  // veto off (default 0): the same classifier lets births through
+  auto nemp_off = std::make_unique<Nemp>();
+  REQUIRE(nemp_off->init(&clutterish->classifier, mfbp::NempParams<float>{}) == Status::kOk);
+  (void)run_scene(nemp_off.get(), true, &born_off);
+  CHECK(born_off > 0u);
+  // detections without a patch are never vetoed
+  std::uint64_t born_no_patch = 0;
+  (void)run_scene(nemp.get(), false, &born_no_patch);
+  CHECK(born_no_patch == born_plain);
+}
+
+TEST_CASE("NEMP clutter side and gain: w above the bound is no evidence, the gain squares the odds") {
+  FakeSlot slot;
+  auto ev = std::make_unique<Evidence>();
+  ev->has_patch[0] = true;
+  FakeBp bp;  // p_FG = 0.5
+  // w = 0.9 with nn_max_target_prob 0.5: capped to 0.5, no factor
+  auto targetish = std::make_unique<ConstantHead>(std::log(9.0f));
+  auto nemp = std::make_unique<Nemp>();
+  mfbp::NempParams<float> p;
+  p.nn_max_target_prob = 0.5f;
+  REQUIRE(nemp->init(&targetish->classifier, p) == Status::kOk);
+  nemp->store_scan(0, slot, ev.get());
+  CHECK_FALSE(nemp->update(0, 1, bp));
+  CHECK(nemp->log_factor(0, 0) == 0.0f);
+  // w = 0.25 (odds 1/3) with gain 2: odds 1/9, BetP = 0.1 at p_FG = 0.5,
+  // L = ln odds(0.5) - ln odds(0.1) = ln 9
+  auto clutterish = std::make_unique<ConstantHead>(-std::log(3.0f));
+  p.nn_log_odds_gain = 2.0f;
+  REQUIRE(nemp->init(&clutterish->classifier, p) == Status::kOk);
+  nemp->store_scan(0, slot, ev.get());
+  CHECK(nemp->update(0, 1, bp));
+  CHECK(nemp->log_factor(0, 0) == doctest::Approx(std::log(9.0)).epsilon(1e-4));
 }
 
 TEST_CASE("NEMP with a non-neutral classifier changes the association") {
@@ -209,6 +276,19 @@ TEST_CASE("NEMP params are validated; the tracker refuses evidence without a sta
   p.rounds = 1;
   p.nn_reliability = 1.5f;
   CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  p.nn_reliability = 1.0f;
+  p.nn_log_odds_gain = 0.0f;
+  CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  p.nn_log_odds_gain = 17.0f;
+  CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  p.nn_log_odds_gain = 1.0f;
+  p.nn_max_target_prob = 0.4f;
+  CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  p.nn_max_target_prob = 1.0f;
+  p.birth_min_target_prob = -0.1f;
+  CHECK(mfbp::validate(p) == Status::kInvalidArgument);
+  p.birth_min_target_prob = 0.5f;
+  CHECK(mfbp::validate(p) == Status::kOk);
   auto nemp = std::make_unique<Nemp>();
   classify::SeaClassifier unready;
   CHECK(nemp->init(&unready, mfbp::NempParams<float>{}) == Status::kNotInitialized);

@@ -74,6 +74,10 @@ std::string apply_mfbp_param(MfbpParams<double>& p, const std::string& kv) {
   if (eq == std::string::npos) return "--mfbp-param " + kv + ": expected NAME=VALUE";
   const std::string name = kv.substr(0, eq);
   const std::string text = kv.substr(eq + 1);
+  // NempParams fields ("nemp.rounds=3") are the nemp adapter's
+  // (trackers/nemp_adapter.cpp); every MF-BP tracker of a compare gets the
+  // same list, so the others pass them by.
+  if (name.rfind("nemp.", 0) == 0) return "";
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end == nullptr || *end != '\0') return "--mfbp-param " + name + ": '" + text + "' is not a number";

@@ -67,6 +67,17 @@ T clamp_probability(T p) {
   return p < lo ? lo : (p > hi ? hi : p);
 }
 
+/// The classifier's probability with its log-odds scaled by gain (a
+/// temperature 1/gain; docs/algorithms/nemp.md §Fusion, "Gain"):
+/// sigmoid(gain ln odds(w)). gain = 1 and w = 0.5 return w exactly.
+template <class T>
+T scale_log_odds(T w, T gain) {
+  if (gain == T(1) || w == T(0.5)) return w;
+  const T c = clamp_probability(w);
+  const T z = gain * (dmath::dlog(c) - dmath::dlog1p(-c));
+  return T(1) / (T(1) + dmath::dexp(-z));
+}
+
 /// ln of the factor on a detection's clutter weight that turns the
 /// extrinsic tracker belief p_fg into the fused belief betp: ln odds(p_fg)
 /// - ln odds(betp) (target odds). 0 exactly when betp == p_fg.

@@ -44,12 +44,30 @@ struct NempParams {
   /// Reliability alpha of the classifier in the DS fusion, in [0, 1]
   /// (1 = the paper's plain Dempster rule).
   T nn_reliability = T(1);
+  /// Gain on the classifier's log-odds before the fusion, in (0, 16]
+  /// (docs/algorithms/nemp.md §Fusion, "Gain"; 1 = the network's output).
+  T nn_log_odds_gain = T(1);
+  /// Upper bound on the classifier's probability before the fusion, in
+  /// [0.5, 1] (docs/algorithms/nemp.md §Fusion, "Clutter side"): 0.5 lets
+  /// the classifier only raise a detection's clutter weight, never lower
+  /// it; 1 = no bound. w = 0.5 stays neutral.
+  T nn_max_target_prob = T(1);
+  /// Two-point birth uses the belief too (docs/algorithms/nemp.md §Birth):
+  /// a detection of a window scan whose classifier probability at the
+  /// uninformative tracker belief 0.5 (prior-corrected) is below this value
+  /// cannot be a birth point. 0 = off; 0.5 vetoes what MP-NN removes. A
+  /// detection without a patch, or w = 0.5 exactly, is never vetoed for
+  /// values <= 0.5, so the neutral element stays neutral.
+  T birth_min_target_prob = T(0);
 };
 
 template <class T>
 [[nodiscard]] Status validate(const NempParams<T>& p) {
   if (p.rounds < 1 || p.rounds > kMaxNempRounds) return Status::kInvalidArgument;
   if (!(p.nn_reliability >= T(0) && p.nn_reliability <= T(1))) return Status::kInvalidArgument;
+  if (!(p.nn_log_odds_gain > T(0) && p.nn_log_odds_gain <= T(16))) return Status::kInvalidArgument;
+  if (!(p.nn_max_target_prob >= T(0.5) && p.nn_max_target_prob <= T(1))) return Status::kInvalidArgument;
+  if (!(p.birth_min_target_prob >= T(0) && p.birth_min_target_prob <= T(1))) return Status::kInvalidArgument;
   return Status::kOk;
 }
 
@@ -91,6 +109,7 @@ class NempState {
       has_[k][c] = ev != nullptr && ev->has_patch[j];
       features_[k][c] = ev != nullptr ? ev->features[j] : classify::Features{};
       log_factor_[k][c] = T(0);
+      birth_veto_[k][c] = has_[k][c] && vetoes_birth(features_[k][c]);
     }
     // Belief record: input detection j starts at the uninformative 0.5
     // (detections refused at intake keep it).
@@ -107,6 +126,7 @@ class NempState {
       has_[k - fc] = has_[k];
       features_[k - fc] = features_[k];
       log_factor_[k - fc] = log_factor_[k];
+      birth_veto_[k - fc] = birth_veto_[k];
       belief_[k - fc] = belief_[k];
       orig_[k - fc] = orig_[k];
     }
@@ -145,7 +165,9 @@ class NempState {
       const T p_fg = extrinsic_target_belief(bp, j, log_factor_[k][j]);
       belief_[k][orig_[k][j]] = static_cast<float>(p_fg);
       const float w_raw = classifier_->target_probability(features_[k][j], static_cast<float>(p_fg));
-      const T w = static_cast<T>(classify::correct_training_prior(w_raw, prior_));
+      const T w_bal = static_cast<T>(classify::correct_training_prior(w_raw, prior_));
+      const T w_scaled = classify::scale_log_odds(w_bal, params_.nn_log_odds_gain);
+      const T w = w_scaled > params_.nn_max_target_prob ? params_.nn_max_target_prob : w_scaled;
       const T betp = classify::ds_discounted_betp(p_fg, w, params_.nn_reliability);
       const T l = classify::clutter_log_factor(p_fg, betp);
       changed = changed || l != log_factor_[k][j];
@@ -153,6 +175,10 @@ class NempState {
     }
     return changed;
   }
+
+  /// Stored detection c of window scan k may not start a track: its
+  /// classifier probability at belief 0.5 is below birth_min_target_prob.
+  bool birth_vetoed(std::size_t k, std::size_t c) const { return birth_veto_[k][c]; }
 
   /// The NEMP factor of stored detection c of window scan k (tests, reports).
   T log_factor(std::size_t k, std::size_t c) const { return log_factor_[k][c]; }
@@ -169,12 +195,23 @@ class NempState {
   }
 
  private:
+  /// Birth veto of one detection (NempParams::birth_min_target_prob): the
+  /// MLP at the uninformative belief 0.5, as MP-NN's removal, so the birth
+  /// test does not depend on the association state of the moment.
+  bool vetoes_birth(const classify::Features& h) const {
+    if (!(params_.birth_min_target_prob > T(0))) return false;
+    const float w_raw = classifier_->target_probability(h, 0.5f);
+    const T w = static_cast<T>(classify::correct_training_prior(w_raw, prior_));
+    return w < params_.birth_min_target_prob;
+  }
+
   const classify::SeaClassifier* classifier_ = nullptr;
   NempParams<T> params_{};
   float prior_ = 0.5f;
   std::array<std::array<bool, kMaxMeas>, kMaxWindow> has_{};
   std::array<std::array<classify::Features, kMaxMeas>, kMaxWindow> features_{};
   std::array<std::array<T, kMaxMeas>, kMaxWindow> log_factor_{};
+  std::array<std::array<bool, kMaxMeas>, kMaxWindow> birth_veto_{};
   // Belief record (finalised_belief()): per window scan, by input index.
   static_assert(kMaxMeas <= 65536, "orig_ holds input indices in 16 bits");
   std::array<std::array<float, kMaxMeas>, kMaxWindow> belief_{};

@@ -19,6 +19,11 @@
 // the newborn's visibility_at_birth (tentative_evicted); a confirmed track
 // or a track born in the same pass is never evicted. Otherwise the birth is
 // refused (track_cap_hits).
+//
+// NEMP (docs/algorithms/nemp.md §Birth): with a NEMP state, a window-scan
+// detection the classifier vetoes (NempParams::birth_min_target_prob) is
+// no birth point, first or second. History scans carry no classifier
+// evidence and are not vetoed.
 #pragma once
 
 #include <array>
@@ -30,6 +35,7 @@
 #include "mptrack/mfbp/mfbp_caps.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/model_constants.h"
+#include "mptrack/mfbp/nemp.h"
 #include "mptrack/mfbp/track_birth.h"
 #include "mptrack/mfbp/track_slot.h"
 #include "mptrack/mfbp/window_store.h"
@@ -52,8 +58,9 @@ class TrackSpawner {
   /// tracks from the best pairs among the n window scans (second points).
   void spawn(std::size_t n, Store& store, Tracks& tracks, const ClutterTable<T, Caps>& cl,
              const MfbpParams<T>& p, const ModelConstants<T>& mc, std::uint32_t& next_id,
-             TrackerCounters& counters) {
+             TrackerCounters& counters, const NempState<T, Caps>* nemp = nullptr) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
+    nemp_ = nemp;
     mark_unexplained(store, tracks, cl, p, mc);
     Candidates cand{};
     std::size_t nc = 0;
@@ -61,7 +68,7 @@ class TrackSpawner {
     for (std::size_t k2 = 0; k2 < n; ++k2) {
       const std::size_t s2 = store.n_hist() + k2;
       for (std::size_t j2 = 0; j2 < store.at(s2).count; ++j2) {
-        if (unexplained(store, s2, j2)) pair_second_point(store, s2, j2, p, cand, nc, max_births);
+        if (birth_point(store, s2, j2)) pair_second_point(store, s2, j2, p, cand, nc, max_births);
       }
     }
     const std::uint32_t first_new = next_id;
@@ -90,6 +97,12 @@ class TrackSpawner {
   /// inside Gaussian clutter by its amplitude alone.
   static constexpr std::uint8_t kExplained = 0, kFree = 1, kInClutter = 2;
   using Candidates = std::array<Candidate, kMaxCandidates>;
+
+  /// Unexplained and, with NEMP, not vetoed by the classifier.
+  bool birth_point(const Store& store, std::size_t si, std::size_t j) const {
+    if (!unexplained(store, si, j)) return false;
+    return nemp_ == nullptr || si < store.n_hist() || !nemp_->birth_vetoed(si - store.n_hist(), j);
+  }
 
   void mark_unexplained(const Store& store, const Tracks& tracks, const ClutterTable<T, Caps>& cl,
                         const MfbpParams<T>& p, const ModelConstants<T>& mc) {
@@ -197,7 +210,7 @@ class TrackSpawner {
         if (a1.r[j1] > r2) break;  // beyond the reach: so is every later one
         continue;
       }
-      if (!unexplained(store, s1, j1)) continue;
+      if (!birth_point(store, s1, j1)) continue;
       const Vec2<T> p1 = model::cartesian_of_polar(a1.r[j1], a1.az[j1]);
       if (!birth_gate(p1, p2, dt, p.v_max_x_mps, p.v_max_y_mps)) continue;
       const T dist = (p2 - p1).squaredNorm();
@@ -300,6 +313,7 @@ class TrackSpawner {
   }
 
   std::array<std::array<std::uint8_t, kMaxMeas>, kStore> unexplained_{};
+  const NempState<T, Caps>* nemp_ = nullptr;  ///< during spawn(); not owned
 };
 
 }  // namespace mptrack::mfbp
