@@ -27,6 +27,7 @@
 #include "mptrack/mfbp/model_constants.h"
 #include "mptrack/mfbp/nemp.h"
 #include "mptrack/mfbp/track_slot.h"
+#include "mptrack/mfbp/weaker_clutter.h"
 #include "mptrack/mfbp/window_store.h"
 #include "mptrack/model/mahalanobis.h"
 #include "mptrack/profile.h"
@@ -74,7 +75,7 @@ class Associator {
     const T log_dop_clutter = s.doppler ? -dmath::dlog(T(2) * p.doppler_span_mps) : T(0);
     clutter_evidence(k, s, src, cl, lambda, p, mc, log_dop_clutter);
     if (nemp != nullptr) nemp->apply(k, s.count, bp_);
-    compute_moments(k, s, tracks, p, mc, counters);
+    compute_moments(k, s, tracks, cl, p, mc, counters);
     TrackList bp_track{};
     std::uint64_t dropped = 0;
     std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, dropped);
@@ -130,8 +131,8 @@ class Associator {
 
   /// Predicted measurement moments of every track first, so that
   /// unresolved tracks can share them (couple_unresolved).
-  void compute_moments(std::size_t k, const Scan& s, Tracks& tracks, const MfbpParams<T>& p,
-                       const ModelConstants<T>& mc, TrackerCounters& counters) {
+  void compute_moments(std::size_t k, const Scan& s, Tracks& tracks, const ClutterTable<T, Caps>& cl,
+                       const MfbpParams<T>& p, const ModelConstants<T>& mc, TrackerCounters& counters) {
     for (std::size_t i = 0; i < kMaxTargets; ++i) {
       TrackSlot<T, Caps>& t = tracks[i];
       TrackMoments<T>& mo = moments_[i];
@@ -139,6 +140,9 @@ class Associator {
       t.mate[k] = 0;
       if (!t.participates(k)) continue;
       mo.ok = track_moments(t, k, s, p, mc, counters, mo);
+      mo.predictive = mo.ok && p.tentative_predictive_in_clutter && !t.confirmed &&
+                      inside_weaker_component(mo.z(0), mo.z(1), t.igs[k].mean(), k, cl, p);
+      if (mo.predictive) t.predictive_evidence = true;
     }
     if (p.unresolved_chi2 > T(0)) {
       couple_unresolved(moments_, tracks, k, p);
