@@ -35,7 +35,8 @@ namespace mptrack::mfbp {
 /// after scan as the track tightens, clutter does not.
 template <class T, class Caps>
 T confirmation_threshold(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
-  return t.predictive_evidence && p.confirm_threshold_in_clutter > p.confirm_threshold
+  return p.tentative_predictive_in_clutter && t.predictive_evidence &&
+                 p.confirm_threshold_in_clutter > p.confirm_threshold
              ? p.confirm_threshold_in_clutter
              : p.confirm_threshold;
 }
