@@ -142,12 +142,35 @@ class Associator {
       mo.ok = track_moments(t, k, s, p, mc, counters, mo);
       mo.predictive = mo.ok && p.tentative_predictive_in_clutter && !t.confirmed &&
                       inside_weaker_component(mo.z(0), mo.z(1), t.igs[k].mean(), k, cl, p);
-      if (mo.predictive) t.predictive_evidence = true;
     }
+    if (p.tentative_predictive_in_clutter) mark_predictive(tracks, mc, p);
     if (p.unresolved_chi2 > T(0)) {
       couple_unresolved(moments_, tracks, k, p);
     } else {
       for (auto& mo : moments_) mo.z_shared = mo.z;
+    }
+  }
+
+  /// Young tracks inside weaker clutter (docs/algorithms/mfbp.md §Birth):
+  /// a candidate whose predicted measurement lies in the gate of a
+  /// confirmed track (gate_chi2 under Sz_a + Sz_b + R) keeps eq. (79): the
+  /// predictive density is for starting a target no track holds, not for a
+  /// second track on a held one, which would take part of that track's
+  /// detections (chaff-crossing: more breaks). The rest are marked
+  /// (TrackSlot::predictive_evidence, for the confirmation threshold).
+  void mark_predictive(Tracks& tracks, const ModelConstants<T>& mc, const MfbpParams<T>& p) {
+    for (std::size_t a = 0; a < kMaxTargets; ++a) {
+      TrackMoments<T>& ma = moments_[a];
+      if (!ma.predictive) continue;
+      for (std::size_t b = 0; b < kMaxTargets && ma.predictive; ++b) {
+        const TrackMoments<T>& mb = moments_[b];
+        if (b == a || !mb.ok || !tracks[b].confirmed) continue;
+        const model::Mahalanobis2<T> dist(ma.Sz + mb.Sz + mc.R);
+        if (!dist.valid()) continue;
+        const Vec2<T> e(mb.z(0) - ma.z(0), model::wrap_angle(mb.z(1) - ma.z(1)));
+        if (!(dist.distance2(e) > p.gate_chi2)) ma.predictive = false;
+      }
+      if (ma.predictive) tracks[a].predictive_evidence = true;
     }
   }
 
