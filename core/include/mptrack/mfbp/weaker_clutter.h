@@ -22,6 +22,26 @@
 
 namespace mptrack::mfbp {
 
+/// fn(mean, covariance, mean total power E[1 + CNR]) for every Gaussian
+/// clutter component: the known map's components that produce clutter
+/// (kKnownMap), or the live estimated ones on window scan k (their NW mean,
+/// E[D^-1] and CNR belief); none in the NCE ablation.
+template <class T, class Caps, class Fn>
+void for_each_gaussian_component(std::size_t k, const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p,
+                                 Fn&& fn) {
+  if (p.clutter_mode == ClutterMode::kKnownMap) {
+    const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
+    for (std::size_t c = 0; c < nk; ++c) {
+      const auto& kc = p.known_clutter.components[c];
+      if (kc.rate_per_scan > T(0)) fn(kc.mean, kc.covariance, T(1) + kc.cnr);
+    }
+  } else if (estimate_clutter(p)) {
+    for (const auto& cs : cl.comps) {
+      if (cs.alive) fn(cs.nws[k].mu, cs.nws[k].expected_covariance(), cs.igs[k].mean());
+    }
+  }
+}
+
 template <class T, class Caps>
 bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, const ClutterTable<T, Caps>& cl,
                              const MfbpParams<T>& p) {
@@ -33,17 +53,7 @@ bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, const Clutt
     if (!gate.valid()) return;
     inside = !(gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > p.clutter_gate_chi2);
   };
-  if (p.clutter_mode == ClutterMode::kKnownMap) {
-    const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
-    for (std::size_t c = 0; c < nk; ++c) {
-      const auto& kc = p.known_clutter.components[c];
-      if (kc.rate_per_scan > T(0)) consider(kc.mean, kc.covariance, T(1) + kc.cnr);
-    }
-  } else if (estimate_clutter(p)) {
-    for (const auto& cs : cl.comps) {
-      if (cs.alive) consider(cs.nws[k].mu, cs.nws[k].expected_covariance(), cs.igs[k].mean());
-    }
-  }
+  for_each_gaussian_component(k, cl, p, consider);
   return inside;
 }
 
