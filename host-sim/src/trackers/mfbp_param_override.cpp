@@ -47,6 +47,7 @@ const Real kReals[] = {
     {"noise.azimuth_std_rad", [](P& p) -> double& { return p.noise.azimuth_std_rad; }},
     {"noise.doppler_std_mps", [](P& p) -> double& { return p.noise.doppler_std_mps; }},
     {"amplitude.threshold", [](P& p) -> double& { return p.amplitude.threshold; }},
+    {"confirm_threshold_in_clutter", [](P& p) -> double& { return p.confirm_threshold_in_clutter; }},
 };
 const Count kCounts[] = {
     {"delete_run", [](P& p) -> std::size_t& { return p.delete_run; }},
@@ -65,6 +66,7 @@ const Flag kFlags[] = {
     {"late_birth", [](P& p) -> bool& { return p.late_birth; }},
     {"amplitude.use_amplitude", [](P& p) -> bool& { return p.amplitude.use_amplitude; }},
     {"use_doppler", [](P& p) -> bool& { return p.use_doppler; }},
+    {"tentative_predictive_in_clutter", [](P& p) -> bool& { return p.tentative_predictive_in_clutter; }},
 };
 
 }  // namespace

@@ -27,6 +27,7 @@
 #include "mptrack/mfbp/model_constants.h"
 #include "mptrack/mfbp/nemp.h"
 #include "mptrack/mfbp/track_slot.h"
+#include "mptrack/mfbp/weaker_clutter.h"
 #include "mptrack/mfbp/window_store.h"
 #include "mptrack/model/mahalanobis.h"
 #include "mptrack/profile.h"
@@ -74,7 +75,7 @@ class Associator {
     const T log_dop_clutter = s.doppler ? -dmath::dlog(T(2) * p.doppler_span_mps) : T(0);
     clutter_evidence(k, s, src, cl, lambda, p, mc, log_dop_clutter);
     if (nemp != nullptr) nemp->apply(k, s.count, bp_);
-    compute_moments(k, s, tracks, p, mc, counters);
+    compute_moments(k, s, tracks, cl, p, mc, counters);
     TrackList bp_track{};
     std::uint64_t dropped = 0;
     std::size_t nbt = add_targets(k, s, tracks, p, mc, bp_track, dropped);
@@ -130,8 +131,8 @@ class Associator {
 
   /// Predicted measurement moments of every track first, so that
   /// unresolved tracks can share them (couple_unresolved).
-  void compute_moments(std::size_t k, const Scan& s, Tracks& tracks, const MfbpParams<T>& p,
-                       const ModelConstants<T>& mc, TrackerCounters& counters) {
+  void compute_moments(std::size_t k, const Scan& s, Tracks& tracks, const ClutterTable<T, Caps>& cl,
+                       const MfbpParams<T>& p, const ModelConstants<T>& mc, TrackerCounters& counters) {
     for (std::size_t i = 0; i < kMaxTargets; ++i) {
       TrackSlot<T, Caps>& t = tracks[i];
       TrackMoments<T>& mo = moments_[i];
@@ -139,11 +140,37 @@ class Associator {
       t.mate[k] = 0;
       if (!t.participates(k)) continue;
       mo.ok = track_moments(t, k, s, p, mc, counters, mo);
+      mo.predictive = mo.ok && p.tentative_predictive_in_clutter && !t.confirmed &&
+                      inside_weaker_component(mo.z(0), mo.z(1), t.igs[k].mean(), k, cl, p);
     }
+    if (p.tentative_predictive_in_clutter) mark_predictive(tracks, mc, p);
     if (p.unresolved_chi2 > T(0)) {
       couple_unresolved(moments_, tracks, k, p);
     } else {
       for (auto& mo : moments_) mo.z_shared = mo.z;
+    }
+  }
+
+  /// Young tracks inside weaker clutter (docs/algorithms/mfbp.md §Birth):
+  /// a candidate whose predicted measurement lies in the gate of a
+  /// confirmed track (gate_chi2 under Sz_a + Sz_b + R) keeps eq. (79): the
+  /// predictive density is for starting a target no track holds, not for a
+  /// second track on a held one, which would take part of that track's
+  /// detections (chaff-crossing: more breaks). The rest are marked
+  /// (TrackSlot::predictive_evidence, for the confirmation threshold).
+  void mark_predictive(Tracks& tracks, const ModelConstants<T>& mc, const MfbpParams<T>& p) {
+    for (std::size_t a = 0; a < kMaxTargets; ++a) {
+      TrackMoments<T>& ma = moments_[a];
+      if (!ma.predictive) continue;
+      for (std::size_t b = 0; b < kMaxTargets && ma.predictive; ++b) {
+        const TrackMoments<T>& mb = moments_[b];
+        if (b == a || !mb.ok || !tracks[b].confirmed) continue;
+        const model::Mahalanobis2<T> dist(ma.Sz + mb.Sz + mc.R);
+        if (!dist.valid()) continue;
+        const Vec2<T> e(mb.z(0) - ma.z(0), model::wrap_angle(mb.z(1) - ma.z(1)));
+        if (!(dist.distance2(e) > p.gate_chi2)) ma.predictive = false;
+      }
+      if (ma.predictive) tracks[a].predictive_evidence = true;
     }
   }
 

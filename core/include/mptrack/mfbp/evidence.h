@@ -160,6 +160,10 @@ struct TrackMoments {
   T z_dop = T(0);                      ///< predicted radial velocity [m/s]
   T var_dop = T(0);                    ///< its variance [(m/s)^2]
   bool ok = false;                     ///< participates and the moments exist
+  /// A tentative track inside a weaker Gaussian clutter component
+  /// (weaker_clutter.h): its spatial evidence is the predictive density
+  /// (target_evidence; docs/algorithms/mfbp.md §Birth).
+  bool predictive = false;
 };
 
 /// Removes the scan-k pseudo-measurement (y_bar, R / w) of the previous
@@ -323,7 +327,16 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
   for (std::size_t j = 0; j < s.count; ++j) {
     const Vec2<T> e(s.r[j] - z_hat(0), model::wrap_angle(s.az[j] - z_hat(1)));
     if (gate.distance2(e) > p.gate_chi2) continue;
-    T v = mc.log_norm_R - T(0.5) * (e.dot(mc.R_inv * e) + trace_term);
+    // Young tracks inside weaker clutter (docs/algorithms/mfbp.md §Birth):
+    // the predictive density N(y; z, Sz + R) = ln E[N(y; h(x), R)] instead
+    // of the MF expectation E[ln N] of seed 000 eq. (79), whose
+    // -tr(R^-1 Sz) / 2 term (~ -5 one scan after a two-point birth) puts a
+    // new track below a dense component's clutter density on every
+    // measurement, so it never takes its target's detections; the same
+    // reason as the Doppler row below.
+    T v = mo.predictive
+              ? -dmath::kLnTwoPi<T> - T(0.5) * (dmath::dlog(gate.det()) + gate.distance2(e))
+              : mc.log_norm_R - T(0.5) * (e.dot(mc.R_inv * e) + trace_term);
     if (s.doppler) {
       // Doppler is our choice (docs/algorithms/mfbp.md §Departures): the
       // predictive density N(d; z_d, S_dd + sigma_d^2) rather than the MF

@@ -221,6 +221,17 @@ struct MfbpParams {
   std::size_t birth_max_in_clutter = 3;  ///< Ours. Births per window whose points passed only
                                          ///< by that amplitude test (inside Gaussian clutter)
   T confirm_threshold = T(0.75);      ///< confirm when b_s(1) >= this at any window scan [-]
+  bool tentative_predictive_in_clutter = true;  ///< Ours. A tentative track whose predicted
+                                      ///< measurement lies in the gate of a Gaussian clutter
+                                      ///< component of lower mean power than its own
+                                      ///< (weaker_clutter.h) scores measurements with the
+                                      ///< predictive density N(y; z, Sz + R) instead of seed 000
+                                      ///< eq. (79)'s MF expectation, and is confirmed at
+                                      ///< confirm_threshold_in_clutter (docs/algorithms/mfbp.md
+                                      ///< §Birth). false = the paper's evidence everywhere
+  T confirm_threshold_in_clutter = T(0.99);  ///< Ours. confirm_threshold of a tentative track
+                                      ///< whose smoothed position on the scan lies in such a
+                                      ///< component (with tentative_predictive_in_clutter) [-]
   T delete_threshold = T(0.5);        ///< delete after delete_run scans with b_s(1) below [-]
   std::size_t delete_run = 5;         ///< consecutive low-visibility scans before deletion. Ours:
                                       ///< the paper deletes after L_max = 3, but with p_s = 0.8
@@ -377,6 +388,8 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "birth_amplitude_tail",
                       check(birth_amplitude_tail >= T(0) && birth_amplitude_tail < T(1)));
   MPTRACK_CHECK_PARAM(w, "confirm_threshold", check_open_probability(confirm_threshold));
+  MPTRACK_CHECK_PARAM(w, "confirm_threshold_in_clutter",
+                      check_open_probability(confirm_threshold_in_clutter));
   MPTRACK_CHECK_PARAM(w, "delete_threshold", check_open_probability(delete_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_run", check_at_least(delete_run, 1));
   MPTRACK_CHECK_PARAM(w, "tentative_timeout_scans", check_at_least(tentative_timeout_scans, 1));

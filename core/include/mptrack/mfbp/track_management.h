@@ -26,13 +26,28 @@
 
 namespace mptrack::mfbp {
 
+/// b_s(1) a tentative track needs (docs/algorithms/mfbp.md §Birth, young
+/// tracks inside weaker clutter): confirm_threshold_in_clutter once it has
+/// scored measurements with the predictive density (predictive_evidence),
+/// confirm_threshold otherwise. The predictive density lets a loose young
+/// track take a clutter point near its prediction at fair odds, so one or
+/// two lucky scans would confirm it at 0.75; a target keeps b_s near 1 scan
+/// after scan as the track tightens, clutter does not.
+template <class T, class Caps>
+T confirmation_threshold(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
+  return p.tentative_predictive_in_clutter && t.predictive_evidence &&
+                 p.confirm_threshold_in_clutter > p.confirm_threshold
+             ? p.confirm_threshold_in_clutter
+             : p.confirm_threshold;
+}
+
 template <class T, class Caps>
 void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams<T>& p,
                     TrackerCounters& counters) {
   for (auto& t : tracks) {
     if (!t.alive || t.confirmed) continue;
     for (std::size_t k = t.first; k < n; ++k) {
-      if (t.vis[k] >= p.confirm_threshold) {
+      if (t.vis[k] >= confirmation_threshold(t, p)) {
         t.confirmed = true;
         ++counters.tracks_confirmed;
         break;

@@ -40,6 +40,10 @@ struct TrackSlot {
   std::size_t first = 0;       ///< first window scan of the track
   std::uint32_t low_run = 0;   ///< finalised consecutive scans with b_s < delete_threshold
   std::uint32_t age = 0;       ///< finalised scans since birth
+  /// Scored measurements with the predictive density (young track inside
+  /// weaker clutter, weaker_clutter.h) on some scan while tentative: it is
+  /// confirmed at confirm_threshold_in_clutter (docs/algorithms/mfbp.md §Birth).
+  bool predictive_evidence = false;
   // prior: filtered at the scan before the window (or birth state)
   Vec4 x0 = Vec4::Zero();
   Mat4 P0 = Mat4::Identity();
@@ -135,6 +139,7 @@ struct TrackSlot {
     first = 0;
     low_run = 0;
     age = 0;
+    predictive_evidence = false;
     x0 = Vec4::Zero();
     P0 = Mat4::Identity();
     ig0 = IG{};

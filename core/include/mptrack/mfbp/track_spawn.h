@@ -38,6 +38,7 @@
 #include "mptrack/mfbp/nemp.h"
 #include "mptrack/mfbp/track_birth.h"
 #include "mptrack/mfbp/track_slot.h"
+#include "mptrack/mfbp/weaker_clutter.h"
 #include "mptrack/mfbp/window_store.h"
 #include "mptrack/model/mahalanobis.h"
 #include "mptrack/profile.h"
@@ -146,17 +147,7 @@ class TrackSpawner {
       const T tail = amplitude_tail(m, d, varsigma, n_order);
       tail_max = tail > tail_max ? tail : tail_max;
     };
-    if (p.clutter_mode == ClutterMode::kKnownMap) {
-      const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
-      for (std::size_t c = 0; c < nk; ++c) {
-        const auto& kc = p.known_clutter.components[c];
-        if (kc.rate_per_scan > T(0)) consider(kc.mean, kc.covariance, T(1) + kc.cnr);
-      }
-    } else if (estimate_clutter(p)) {
-      for (const auto& cs : cl.comps) {
-        if (cs.alive) consider(cs.nws[k_ref].mu, cs.nws[k_ref].expected_covariance(), cs.igs[k_ref].mean());
-      }
-    }
+    for_each_gaussian_component(k_ref, cl, p, consider);
     return gated && tail_max < p.birth_amplitude_tail;
   }
 

@@ -1,0 +1,132 @@
+// MF-BP birth inside weaker clutter (issue 18 point 1; docs/algorithms/mfbp.md
+// §Birth, "Young tracks inside weaker clutter"): which clutter component
+// counts as weaker (weaker_clutter.h), the predictive spatial evidence of a
+// young track there (evidence.h, target_evidence) and its confirmation
+// threshold (track_management.h). Values derived by hand.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "mptrack/mfbp/evidence.h"
+#include "mptrack/mfbp/mfbp_tracker.h"
+#include "mptrack/mfbp/track_management.h"
+#include "mptrack/mfbp/weaker_clutter.h"
+
+using namespace mptrack;
+
+namespace {
+
+struct WcCaps {
+  static constexpr std::size_t kMaxTargets = 4;
+  static constexpr std::size_t kMaxMeasurements = 8;
+  static constexpr std::size_t kMaxClutterComponents = 2;
+  static constexpr std::size_t kMaxWindow = 4;
+};
+
+constexpr double kAz0 = 0.6108652381980153;   // 35 deg [rad]
+constexpr double kSigAz = 0.08726646259971647;  // 5 deg [rad]
+
+/// The clutter-birth scene's component as a known map: 30 per scan at
+/// 30 km, 35 deg, spread 2.5 km x 5 deg, CNR 4 (total power 5).
+MfbpParams<double> known_map_params() {
+  MfbpParams<double> p = seed000_default_params<double>();
+  p.clutter_mode = ClutterMode::kKnownMap;
+  p.known_clutter.num_components = 1;
+  auto& c = p.known_clutter.components[0];
+  c.rate_per_scan = 30.0;
+  c.mean << 30000.0, kAz0;
+  c.covariance << 2500.0 * 2500.0, 0.0, 0.0, kSigAz * kSigAz;
+  c.cnr = 4.0;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("mfbp weaker clutter: a component of lower power than the target holds its gate") {
+  const MfbpParams<double> p = known_map_params();
+  const mfbp::ClutterTable<double, WcCaps> cl{};
+  // Centre, target total power 11 (SNR 10) > 5: weaker.
+  CHECK(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  // Equal or lower target power: not weaker (the amplitude does not favour the target).
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 5.0, 0, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 4.0, 0, cl, p));
+  // 5 sigma in range: d^2 = 25 <= clutter_gate_chi2 30, inside; 5.6 sigma: d^2 = 31.36, outside.
+  CHECK(mfbp::inside_weaker_component(30000.0 + 5.0 * 2500.0, kAz0, 11.0, 0, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0 + 5.6 * 2500.0, kAz0, 11.0, 0, cl, p));
+  // 3 sigma in both: d^2 = 18, inside.
+  CHECK(mfbp::inside_weaker_component(30000.0 + 3.0 * 2500.0, kAz0 - 3.0 * kSigAz, 11.0, 0, cl, p));
+}
+
+TEST_CASE("mfbp weaker clutter: never without amplitude or Gaussian components") {
+  MfbpParams<double> p = known_map_params();
+  const mfbp::ClutterTable<double, WcCaps> cl{};
+  p.amplitude.use_amplitude = false;  // KI ablation
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  p = known_map_params();
+  p.clutter_mode = ClutterMode::kKnownRateUniform;  // NCE ablation: uniform clutter only
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  p = known_map_params();
+  p.known_clutter.components[0].rate_per_scan = 0.0;  // a component that produces nothing
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  p = known_map_params();
+  p.clutter_mode = ClutterMode::kEstimatedMap;  // no component alive yet
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+}
+
+TEST_CASE("mfbp young track in weaker clutter: predictive evidence N(y; z, Sz + R), not E[ln N]") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  p.amplitude.use_amplitude = false;  // spatial term alone
+  mfbp::ModelConstants<double> mc;
+  mc.set(p);
+  const double var_r = 20.0 * 20.0;
+  const double var_a = p.noise.azimuth_std_rad * p.noise.azimuth_std_rad;
+  // A track one scan after a two-point birth: Sz = 5 R (docs/algorithms/mfbp.md §Birth).
+  mfbp::TrackMoments<double> mo;
+  mo.z << 30000.0, kAz0;
+  mo.z_shared = mo.z;
+  mo.Sz << 5.0 * var_r, 0.0, 0.0, 5.0 * var_a;
+  mo.ok = true;
+  const model::Mahalanobis2<double> gate(mo.Sz + mc.R);
+  REQUIRE(gate.valid());
+  mfbp::ScanSlot<double, WcCaps> s{};
+  s.count = 1;
+  s.r[0] = 30000.0 + 2.0 * 20.0;  // 2 sigma_r off, e^T R^-1 e = 4
+  s.az[0] = kAz0;
+  mfbp::TrackSlot<double, WcCaps> t{};
+  mfbp::GateList<double, 64> mf_list, pred_list;
+  (void)mfbp::target_evidence(t, mo, gate, s, 0, p, mc, mf_list);
+  mo.predictive = true;
+  (void)mfbp::target_evidence(t, mo, gate, s, 0, p, mc, pred_list);
+  REQUIRE(mf_list.size == 1);
+  REQUIRE(pred_list.size == 1);
+  const double ln_norm_R = -std::log(2.0 * M_PI) - 0.5 * std::log(var_r * var_a);
+  // MF (seed 000 eq. (79)): ln N(y; z, R) - tr(R^-1 Sz) / 2 = ln_norm_R - (4 + 10) / 2.
+  CHECK(mf_list.v[0] == doctest::Approx(ln_norm_R - 7.0).epsilon(1e-12));
+  // Predictive: S = 6 R, so ln_norm_R - ln 6 - (4 / 6) / 2.
+  CHECK(pred_list.v[0] == doctest::Approx(ln_norm_R - std::log(6.0) - 1.0 / 3.0).epsilon(1e-12));
+  // The gap that kept a young track below a dense component: 7 - 1.79 - 0.33 = 4.87 nats.
+  CHECK(pred_list.v[0] - mf_list.v[0] == doctest::Approx(7.0 - std::log(6.0) - 1.0 / 3.0).epsilon(1e-12));
+}
+
+TEST_CASE("mfbp young track in weaker clutter: confirmed at confirm_threshold_in_clutter") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  TrackerCounters counters{};
+  tracks[0].start(1, 0, 0.5);
+  tracks[1].start(2, 0, 0.5);
+  tracks[1].predictive_evidence = true;
+  for (auto* t : {&tracks[0], &tracks[1]}) t->vis[0] = 0.98;  // above 0.75, below 0.99
+  mfbp::confirm_tracks(tracks, 1, p, counters);
+  CHECK(tracks[0].confirmed);
+  CHECK_FALSE(tracks[1].confirmed);
+  tracks[1].vis[0] = 0.99;
+  mfbp::confirm_tracks(tracks, 1, p, counters);
+  CHECK(tracks[1].confirmed);
+  CHECK(counters.tracks_confirmed == 2u);
+  // Off: the usual threshold for every track.
+  p.tentative_predictive_in_clutter = false;
+  tracks[2].start(3, 0, 0.5);
+  tracks[2].predictive_evidence = true;
+  tracks[2].vis[0] = 0.8;
+  CHECK(mfbp::confirmation_threshold(tracks[2], p) == 0.75);
+}
