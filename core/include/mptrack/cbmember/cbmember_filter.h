@@ -225,27 +225,22 @@ class CbMemberFilter : public rfs::GmFilterFrame<CbMemberFilter<T, Caps>, T, Cap
   // seed000-s2 the demand falls from 87 to 64 at most).
   void collect_updated_components(std::size_t i, std::size_t nt) {
     raw_.clear();
-    const T lt = updated_log_total(i, nt);
-    rfs::Vec2<T> v;
-    T lq = T(0);
-    for (std::size_t t = 0; t < nt; ++t) {
-      const Track& tr = pred_[t];
-      if (!(log_rho_[t] > T(-1e29))) continue;
-      const T lodds = dmath::dlog(tr.r) - dmath::dlog(T(1) - tr.r);
-      for (std::size_t j = 0; j < tr.comps.size(); ++j) {
-        if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
-        const T w = dmath::dexp(lodds + dmath::dlog(tr.comps[j].weight) + lq - lt);
-        if (!(w >= params_.prune_threshold)) continue;
-        Component u = rfs::updated_component(tr.comps[j], lin_[t][j], batch_, i, v, params_);
-        u.weight = w;
-        push_raw(u);
-      }
-    }
+    rfs::LogSum<T> total;
+    for_each_gated(i, nt, [&](std::size_t, std::size_t, T lw, const rfs::Vec2<T>&) { total.add(lw); });
+    const T lt = total.value();
+    for_each_gated(i, nt, [&](std::size_t t, std::size_t j, T lw, const rfs::Vec2<T>& v) {
+      const T w = dmath::dexp(lw - lt);
+      if (!(w >= params_.prune_threshold)) return;
+      Component u = rfs::updated_component(pred_[t].comps[j], lin_[t][j], batch_, i, v, params_);
+      u.weight = w;
+      push_raw(u);
+    });
   }
 
-  // ln sum_tj r_t/(1-r_t) w_tj q_tj(z) over the gated components.
-  T updated_log_total(std::size_t i, std::size_t nt) {
-    rfs::LogSum<T> total;
+  // Calls f(t, j, ln(r_t/(1-r_t) w_tj q_tj(z)), innovation) for every
+  // component j of predicted Bernoulli t that gates measurement i.
+  template <class F>
+  void for_each_gated(std::size_t i, std::size_t nt, F&& f) {
     rfs::Vec2<T> v;
     T lq = T(0);
     for (std::size_t t = 0; t < nt; ++t) {
@@ -254,10 +249,10 @@ class CbMemberFilter : public rfs::GmFilterFrame<CbMemberFilter<T, Caps>, T, Cap
       const T lodds = dmath::dlog(tr.r) - dmath::dlog(T(1) - tr.r);
       for (std::size_t j = 0; j < tr.comps.size(); ++j) {
         if (!rfs::log_detection_likelihood(tr.comps[j], lin_[t][j], batch_, i, model_, params_, gate_, v, lq)) continue;
-        total.add(lodds + dmath::dlog(tr.comps[j].weight) + lq);
+        const T lw = lodds + dmath::dlog(tr.comps[j].weight) + lq;
+        f(t, j, lw, v);
       }
     }
-    return total.value();
   }
 
   static void renormalize(Track& t) {
