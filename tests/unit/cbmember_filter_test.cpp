@@ -13,6 +13,17 @@ using ScanD = Scan<double, DefaultCaps::kMaxMeasurements>;
 
 namespace {
 const phdtest::Truth kTruth[2] = {{-500.0, 10.0, 0.0, 5.0}, {300.0, -5.0, -400.0, 10.0}};
+
+// One raw component per updated Bernoulli: a target's measurement gated by
+// its track and by the birth it seeded one scan earlier already overflows.
+struct OneRawCaps : DefaultCaps {
+  static constexpr std::size_t kMaxComponentsPerBernoulli = 1;
+  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 1;
+};
+// Four Bernoullis: 40 clutter births per scan overflow the track list.
+struct FourTrackCaps : DefaultCaps {
+  static constexpr std::size_t kMaxTargets = 4;
+};
 }
 
 TEST_CASE("CBMeMBer tracks two targets and its cardinality sums to about 2") {
@@ -76,4 +87,29 @@ TEST_CASE("CBMeMBer rejects invalid params and out-of-order scans") {
   phdtest::make_scan(*scan, 2, kTruth, 2, 5, 1);
   CHECK(f->step(*scan) == Status::kOk);
   CHECK(f->step(*scan) == Status::kOutOfOrder);
+}
+
+TEST_CASE("CBMeMBer: the raw-collection cap is a counted truncation, not a capacity error") {
+  auto f = std::make_unique<CbMemberFilter<double, OneRawCaps>>();
+  REQUIRE(f->init(phdtest::seed001_params()) == Status::kOk);
+  auto scan = std::make_unique<ScanD>();
+  for (int k = 0; k < 10; ++k) {
+    phdtest::make_scan(*scan, k, kTruth, 2, 0, 3);  // no clutter: 2 targets only
+    CHECK(f->step(*scan) == Status::kOk);
+  }
+  CHECK(f->counters().mixture_truncated > 0u);
+  CHECK(f->counters().track_cap_hits == 0u);
+}
+
+TEST_CASE("CBMeMBer: a full track list leaves out low-existence Bernoullis as a counted truncation") {
+  auto f = std::make_unique<CbMemberFilter<double, FourTrackCaps>>();
+  REQUIRE(f->init(phdtest::seed001_params()) == Status::kOk);
+  auto scan = std::make_unique<ScanD>();
+  for (int k = 0; k < 10; ++k) {
+    phdtest::make_scan(*scan, k, kTruth, 2, 40, 3);
+    CHECK(f->step(*scan) == Status::kOk);
+  }
+  CHECK(f->tracks().size() == 4u);
+  CHECK(f->counters().mixture_truncated > 0u);
+  CHECK(f->counters().track_cap_hits == 0u);
 }

@@ -54,9 +54,11 @@ struct DefaultCaps {
   /// (2 per target; the lightest beyond it are dropped, track_cap_hits).
   static constexpr std::size_t kMaxMixtureComponents = 128;
   /// CBMeMBer: Gaussian components per Bernoulli after reduction, and the
-  /// heaviest collected before it (track_cap_hits counts what is dropped).
+  /// heaviest collected before it (mixture_truncated counts what is dropped).
   static constexpr std::size_t kMaxComponentsPerBernoulli = 4;
-  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 16;
+  /// 64: seed000-s2 needs up to 64 above prune_threshold per updated
+  /// Bernoulli (p99.9 52; docs/algorithms/cbmember.md §Caps).
+  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 64;
 };
 
 /// Small board: fits a 64 KiB RAM budget (see README, footprint report).
