@@ -93,7 +93,9 @@ struct LargeCaps {
   static constexpr std::size_t kMaxBirthCandidates = 32;
   static constexpr std::size_t kMaxMixtureComponents = 512;
   static constexpr std::size_t kMaxComponentsPerBernoulli = 4;
-  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 16;
+  /// As DefaultCaps: the measured per-Bernoulli budget does not shrink with
+  /// more RAM (docs/algorithms/cbmember.md §Caps).
+  static constexpr std::size_t kMaxRawComponentsPerBernoulli = 64;
 };
 
 /// Declares the trait Trait<Caps>: Caps::Member if the caps type declares
