@@ -20,13 +20,7 @@ struct BitReversal {
   static constexpr std::size_t kLog2 = log2_exact(N);
 
   /// j with its kLog2 bits reversed.
-  static constexpr std::size_t reverse(std::size_t j) {
-    std::size_t r = 0;
-    for (std::size_t b = 0; b < kLog2; ++b) {
-      if ((j >> b) & 1u) r |= std::size_t{1} << (kLog2 - 1 - b);
-    }
-    return r;
-  }
+  static constexpr std::size_t reverse(std::size_t j) { return reverse_low_bits(j, kLog2); }
 
   using Index = std::uint16_t;  // N <= 65536, so every index fits
 
@@ -149,10 +143,7 @@ struct BitReversal {
   MPTRACK_FFT_INLINE static void radix4_first_permute(float* re, float* im) {
     constexpr std::size_t kMid = kLog2 - 4;
     for (std::size_t b = 0; b < N / 16; ++b) {
-      std::size_t rb = 0;
-      for (std::size_t k = 0; k < kMid; ++k) {
-        if ((b >> k) & 1u) rb |= std::size_t{1} << (kMid - 1 - k);
-      }
+      const std::size_t rb = reverse_low_bits(b, kMid);
       if (rb < b) continue;  // the pair was handled at rb
       V4 pr[4], pi[4];
       first_block(re + 4 * b, im + 4 * b, pr, pi);
@@ -174,10 +165,7 @@ struct BitReversal {
     constexpr std::size_t kQ = N / 4;
     constexpr std::size_t kMid = kLog2 - 4;
     for (std::size_t b = 0; b < N / 16; ++b) {
-      std::size_t rb = 0;
-      for (std::size_t k = 0; k < kMid; ++k) {
-        if ((b >> k) & 1u) rb |= std::size_t{1} << (kMid - 1 - k);
-      }
+      const std::size_t rb = reverse_low_bits(b, kMid);
       if (rb < b) continue;  // the pair was handled at rb
       float* p = x + 4 * b;
       float* q = x + 4 * rb;

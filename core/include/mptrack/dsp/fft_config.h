@@ -59,4 +59,14 @@ constexpr std::size_t log2_exact(std::size_t n) {
   return l;
 }
 
+/// j's low `bits` bits in reverse order: the bit-reversal index, also of
+/// the block indices the blocked permutations pair up.
+constexpr std::size_t reverse_low_bits(std::size_t j, std::size_t bits) {
+  std::size_t r = 0;
+  for (std::size_t b = 0; b < bits; ++b) {
+    if ((j >> b) & 1u) r |= std::size_t{1} << (bits - 1 - b);
+  }
+  return r;
+}
+
 }  // namespace mptrack::dsp

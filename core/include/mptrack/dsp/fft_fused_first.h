@@ -157,10 +157,7 @@ struct FusedFirst {
     static_assert(N >= 64, "8 x 8 blocks need N >= 64");
     constexpr std::size_t kMid = kLog2 - 6;
     for (std::size_t b = 0; b < N / 64; ++b) {
-      std::size_t rb = 0;
-      for (std::size_t k = 0; k < kMid; ++k) {
-        if ((b >> k) & 1u) rb |= std::size_t{1} << (kMid - 1 - k);
-      }
+      const std::size_t rb = reverse_low_bits(b, kMid);
       if (rb < b) continue;  // the pair was handled at rb
       V8 p[8];
       load_rows8(x + 8 * b, p);
@@ -182,10 +179,7 @@ struct FusedFirst {
     static_assert(N >= 128 && kLog2 % 2 == 1, "8 x 8 blocks of an odd log2 N >= 7");
     constexpr std::size_t kMid = kLog2 - 6;
     for (std::size_t b = 0; b < N / 64; ++b) {
-      std::size_t rb = 0;
-      for (std::size_t k = 0; k < kMid; ++k) {
-        if ((b >> k) & 1u) rb |= std::size_t{1} << (kMid - 1 - k);
-      }
+      const std::size_t rb = reverse_low_bits(b, kMid);
       if (rb < b) continue;  // the pair was handled at rb
       V8 pr[8], pm[8];
       block8(re + 8 * b, im + 8 * b, w, pr, pm);
