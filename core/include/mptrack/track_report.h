@@ -73,7 +73,7 @@ struct TrackerCounters {
   std::uint64_t association_cap_hits = 0;     ///< gated (track, measurement) pairs dropped by an association cap
   std::uint64_t tentative_evicted = 0;        ///< tentative tracks deleted to make room for a more likely
                                               ///< birth when the track table was full (never a confirmed one)
-  std::uint64_t mixture_truncated = 0;        ///< Gaussian components left out by a mixture's J_max truncation
+  std::uint64_t mixture_truncated = 0;        ///< left out by a cap but never reportable: GM-PHD/CPHD components beyond J_max, CBMeMBer components beyond the raw cap and Bernoullis with r <= existence_extract beyond the track list
                                               ///< (GM-PHD/CPHD, CBMeMBer; rfs/mixture.h): counted, not a cap error
 };
 
