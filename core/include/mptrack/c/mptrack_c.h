@@ -102,7 +102,7 @@ typedef struct mptrack_counters {
   uint64_t measurements_duplicate;
   uint64_t association_cap_hits;
   uint64_t tentative_evicted; /* tentative tracks deleted to make room for a more likely birth */
-  uint64_t mixture_truncated; /* GM components left out by a mixture's J_max truncation (not an error) */
+  uint64_t mixture_truncated; /* left out by a cap, never reportable (GM components beyond J_max, CBMeMBer raw components, low-r Bernoullis); not an error */
   /* Scans refused by mptrack_step() before the tracker saw them: more
    * detections than mptrack_max_detections() (MPTRACK_CAPACITY_EXCEEDED). */
   uint64_t scans_over_detection_cap;
