@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "eval/paired.h"
 #include "run/run_loop.h"
 #include "run/scan_source.h"
 #include "svg_plot.h"
@@ -176,6 +177,23 @@ std::string track_scores_markdown(const CompareResult& r) {
   return s;
 }
 
+// Every row against the first, run by run (eval/paired.h): whether a mean
+// OSPA difference is clear of the Monte Carlo noise.
+std::string paired_ospa_markdown(const CompareResult& r) {
+  if (r.rows.size() < 2 || r.runs < 2) return "";
+  const CompareRow& ref = r.rows.front();
+  std::string s = "\n| tracker | OSPA - " + ref.tracker + " [m], paired per run: mean +- standard error (runs lower) |\n"
+                  "|---|---|\n";
+  for (std::size_t i = 1; i < r.rows.size(); ++i) {
+    s += "| " + r.rows[i].tracker + " | " +
+         paired_difference_text(paired_difference(r.rows[i].ospa_per_run, ref.ospa_per_run), 2) + " |\n";
+  }
+  s += "\nPaired differences (docs/algorithms/metrics.md §Paired differences): every tracker ran on the same scenes, "
+       "so the difference of each run's mean OSPA is taken run by run; a difference within about 2 standard "
+       "errors of 0 is Monte Carlo noise.\n";
+  return s;
+}
+
 }  // namespace
 
 nlohmann::ordered_json compare_to_json(const CompareResult& r) {
@@ -204,7 +222,8 @@ nlohmann::ordered_json compare_to_json(const CompareResult& r) {
                     {"measurement_checksum", hex64(x.measurement_checksum)},
                     {"track_scores", track_scores_json(x.track_scores)},
                     {"seed003_metrics", seed003_metrics_json(x)},
-                    {"ospa_per_scan", x.ospa_per_scan}});
+                    {"ospa_per_scan", x.ospa_per_scan},
+                    {"ospa_per_run", x.ospa_per_run}});
   }
   return json{{"scenario", r.scenario},
               {"runs", r.runs},
@@ -241,6 +260,7 @@ std::string compare_to_markdown(const CompareResult& r) {
        "(missed/false = c^p/2 per unassigned truth/track). card. error = |#confirmed - #targets|; NFT = confirmed "
        "tracks with no target within c. Latency: wall time of one step() on this host (a smoother's p50 is a "
        "buffering step). errors: steps returning an error status.\n";
+  s += paired_ospa_markdown(r);
   s += track_scores_markdown(r);
   s += seed003_metrics_markdown(r);
   return s;

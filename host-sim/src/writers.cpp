@@ -108,6 +108,7 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
   j["counters"] = nlohmann::ordered_json::object();
   for_each_counter([&](const char* name, std::uint64_t TrackerCounters::*field) { j["counters"][name] = c.*field; });
   j["ospa_per_scan"] = s.ospa_per_scan;
+  j["ospa_per_run"] = s.ospa_per_run;
   j["cardinality_per_scan"] = {{"mean_confirmed", s.confirmed_mean_per_scan},
                                {"std_confirmed", s.confirmed_std_per_scan},
                                {"mean_truths", s.truths_per_scan}};

@@ -187,6 +187,18 @@ TEST_CASE("sim aggregator: hand-computed means over evaluation scans, statuses, 
   CHECK(s.step_status.at("numerical_error") == 1);
 }
 
+TEST_CASE("sim aggregator: each run's mean OSPA over its evaluation scans, in run order") {
+  // 2 runs x 3 scans, evaluation interval 2..3: scan 1 (OSPA 100 / 200) is left out.
+  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 2, 3, TrackScoringParams{}});
+  const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
+  agg.add_run(scans, record(0, {1, 2, 3}, {0, 0, 0}), {metrics(100, 1, 1, 0), metrics(10, 1, 1, 0), metrics(20, 1, 1, 0)});
+  agg.add_run(scans, record(1, {1, 2, 3}, {0, 0, 0}), {metrics(200, 1, 1, 0), metrics(30, 1, 1, 0), metrics(50, 1, 1, 0)});
+  const Summary s = agg.summary();
+  REQUIRE(s.ospa_per_run.size() == 2);
+  CHECK(s.ospa_per_run[0] == doctest::Approx(15.0));  // (10 + 20) / 2
+  CHECK(s.ospa_per_run[1] == doctest::Approx(40.0));  // (30 + 50) / 2
+}
+
 TEST_CASE("sim aggregator: the measurement checksum chains over delivered scans only, in order") {
   const std::vector<sc::SimScan> scans = {scan_with(1, 2), scan_with(2, 3), scan_with(3, 1)};
   Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 1, 3, TrackScoringParams{}});

@@ -91,6 +91,8 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   add_counters(sum_.counters, rec.counters);
 
   std::set<std::uint32_t> found;
+  double run_ospa = 0.0;
+  std::uint32_t run_eval_scans = 0;
   for (std::uint32_t k = 1; k <= sum_.scans; ++k) {
     const ScanMetrics& m = metrics[k - 1];
     sum_.ospa_per_scan[k - 1] += m.ospa / static_cast<double>(sum_.runs);
@@ -101,8 +103,13 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
     for (const TrackOut& t : rec.by_scan[k - 1].tracks) {
       if (t.confirmed) found.insert(t.id);
     }
-    if (k >= sum_.eval_first_scan && k <= sum_.eval_last_scan) add_eval_scan(m);
+    if (k >= sum_.eval_first_scan && k <= sum_.eval_last_scan) {
+      add_eval_scan(m);
+      run_ospa += m.ospa;
+      ++run_eval_scans;
+    }
   }
+  sum_.ospa_per_run.push_back(run_eval_scans > 0 ? run_ospa / static_cast<double>(run_eval_scans) : 0.0);
   tracks_found_ += static_cast<double>(found.size());
   add_object_errors(scans, metrics);
   sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring));

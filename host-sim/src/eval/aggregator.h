@@ -68,6 +68,9 @@ struct Summary : SummaryHeader {
   std::uint64_t eval_scan_count = 0;    ///< runs x evaluation scans
   LatencyStats latency;                 ///< step() of every scan given to the tracker
   std::vector<double> ospa_per_scan;    ///< mean over runs, index scan-1 [m]
+  /// Mean OSPA over each run's evaluation scans, in run order [m]: the
+  /// per-run values paired_difference() (eval/paired.h) compares across trackers.
+  std::vector<double> ospa_per_run;
   std::vector<double> confirmed_mean_per_scan;  ///< confirmed tracks, mean over runs, index scan-1
   std::vector<double> confirmed_std_per_scan;   ///< ... their standard deviation over runs (population)
   std::vector<double> truths_per_scan;          ///< targets alive, mean over runs, index scan-1
