@@ -43,9 +43,11 @@ def sim(sw, snr_w, snr_s, dr, sr=20.0, n=400000, use_range=True, seed=1):
                 lw += -((r-rw_true)**2)/(2*sr*sr); ls += -((r-rs_true)**2)/(2*sr*sr)
             if (lw > ls) == dw: correct += 1
     return correct/total
+
+
 if __name__ == "__main__":
-  for sw in (1, 3):
-      for s2 in (10, 20, 30):
-          print(sw, s2, "amp only %.3f" % sim(sw, 10/3, s2, 8.5, use_range=False, n=200000),
-                "amp+range(8.5m) %.3f" % sim(sw, 10/3, s2, 8.5, n=200000),
-                "amp+range(10m) %.3f" % sim(sw, 10/3, s2, 10.0, n=200000))
+    for sw in (1, 3):
+        for s2 in (10, 20, 30):
+            print(sw, s2, "amp only %.3f" % sim(sw, 10/3, s2, 8.5, use_range=False, n=200000),
+                  "amp+range(8.5m) %.3f" % sim(sw, 10/3, s2, 8.5, n=200000),
+                  "amp+range(10m) %.3f" % sim(sw, 10/3, s2, 10.0, n=200000))

@@ -75,14 +75,14 @@ int run_table5(const Table5Args& a, bool progress) {
   csv << "tracker,swerling,snr1,snr2,mean_ospa,car,car_identity,runs\n";
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   std::string table = table_header();
-  std::vector<Summary> cells[2];  // per tracker, in column order
+  std::vector<std::vector<double>> ospa_per_run[2];  // per tracker, one per column: what the paired row needs
   for (int t = 0; t < 2; ++t) {
     const char* tr = trackers[t];
     std::vector<std::string> text;
     for (double s2 : kSnr2) {
       for (Swerling sw : kSwerling) {
         const Summary s = run_cell(a, tr, sw, s2, progress);
-        cells[t].push_back(s);
+        ospa_per_run[t].push_back(s.ospa_per_run);
         char cell[64];
         std::snprintf(cell, sizeof cell, "%.1f / %.2f / %.2f", s.mean_ospa, s.car, s.car_identity);
         text.push_back(cell);
@@ -98,8 +98,8 @@ int run_table5(const Table5Args& a, bool progress) {
   // MF-BP - KI per run on the same scenes (eval/paired.h): is the margin clear of the Monte Carlo noise?
   std::vector<std::string> paired;
   nlohmann::ordered_json paired_json = nlohmann::ordered_json::array();
-  for (std::size_t c = 0; c < cells[0].size(); ++c) {
-    const PairedDifference d = paired_difference(cells[1][c].ospa_per_run, cells[0][c].ospa_per_run);
+  for (std::size_t c = 0; c < ospa_per_run[0].size(); ++c) {
+    const PairedDifference d = paired_difference(ospa_per_run[1][c], ospa_per_run[0][c]);
     paired.push_back(paired_difference_text(d, 2));
     paired_json.push_back({{"mean_m", d.mean}, {"standard_error_m", d.standard_error}, {"runs", d.runs},
                            {"mfbp_lower_runs", d.a_lower}});

@@ -21,7 +21,8 @@ struct PairedDifference {
 /// a - b, paired by run index.
 PairedDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b);
 
-/// "-2.52 +- 1.46 (A lower in 40 of 100)" style text, `digits` after the point.
+/// "-2.52 +- 1.46 (lower in 40 of 100)": mean +- standard error (runs with a lower), `digits` after the point;
+/// "n/a" when nothing was compared.
 std::string paired_difference_text(const PairedDifference& d, int digits);
 
 }  // namespace mptrack::sim
