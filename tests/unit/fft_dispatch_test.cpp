@@ -14,34 +14,19 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "mptrack/dsp/fft.h"
+#include "fft_test_values.h"
 
 namespace {
 
-float test_value(std::uint32_t& x, int kind) {
-  x = x * 1664525u + 1013904223u;
-  const float u = static_cast<float>(static_cast<int>(x >> 9) % 20001 - 10000) * 1e-4f;
-  switch (kind % 6) {
-    case 0: return u;
-    case 1: return u * 1e-39f;                                  // subnormal range
-    case 2: return (x & 0x100u) != 0u ? -0.0f : 0.0f;           // signed zeros
-    case 3: return u * 1e30f;                                   // large (overflows to inf)
-    case 4: return (x & 0x7000u) == 0u ? std::numeric_limits<float>::infinity() : u;
-    default: return (x & 0x7000u) == 0u ? std::numeric_limits<float>::quiet_NaN() : u;
-  }
-}
-
-// Bit-identical, or both NaN.
+// Bit-identical, or both NaN, element by element.
 bool same(const std::vector<float>& a, const std::vector<float>& b) {
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a[i] != a[i] && b[i] != b[i]) continue;
-    if (std::memcmp(&a[i], &b[i], sizeof(float)) != 0) return false;
+    if (!mptrack::test::same_bits_or_nan(a[i], b[i])) return false;
   }
   return true;
 }
@@ -58,8 +43,8 @@ int mismatches(bool copy_arg = false, mptrack::dsp::FftCopy copy = mptrack::dsp:
   int bad = 0;
   for (int trial = 0; trial < 12; ++trial) {
     for (std::size_t i = 0; i < N; ++i) {
-      re[i] = test_value(x, trial + static_cast<int>(i % 5 == 0));
-      im[i] = test_value(x, trial);
+      re[i] = mptrack::test::fft_test_value(x, trial + static_cast<int>(i % 5 == 0));
+      im[i] = mptrack::test::fft_test_value(x, trial);
     }
     pre = re;
     pim = im;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mptrack/dsp/fft.h"
+#include "fft_test_values.h"
 
 namespace {
 
@@ -107,17 +108,6 @@ void reference_forward(const mptrack::dsp::Fft<N>& fft, float* re, float* im) {
   }
 }
 
-float test_value(std::uint32_t& x, int kind) {
-  x = x * 1664525u + 1013904223u;
-  const float u = static_cast<float>(static_cast<int>(x >> 9) % 20001 - 10000) * 1e-4f;
-  switch (kind % 4) {
-    case 0: return u;
-    case 1: return u * 1e-39f;                           // subnormal range
-    case 2: return (x & 0x100u) != 0u ? -0.0f : 0.0f;    // signed zeros
-    default: return u * 1e30f;                           // large
-  }
-}
-
 // Number of trials whose outputs (forward and inverse) differ in any bit.
 template <std::size_t N>
 int mismatches() {
@@ -128,8 +118,8 @@ int mismatches() {
   int bad = 0;
   for (int trial = 0; trial < 8; ++trial) {
     for (std::size_t i = 0; i < N; ++i) {
-      re[i] = test_value(x, trial + static_cast<int>(i % 3 == 0));
-      im[i] = test_value(x, trial);
+      re[i] = mptrack::test::fft_test_value(x, (trial + static_cast<int>(i % 3 == 0)) % 4);
+      im[i] = mptrack::test::fft_test_value(x, trial % 4);
     }
     ref_re = re;
     ref_im = im;

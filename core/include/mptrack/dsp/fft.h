@@ -59,9 +59,6 @@
 namespace mptrack::dsp {
 
 
-/// The copies of the FFT schedule a build may hold (Fft::forward_copy).
-enum class FftCopy { kBaseline, kAvx2, kAvx512 };
-
 /// Radix-2^2 FFT of fixed length N (a power of two, 2..65536).
 /// Footprint: 2 N floats of twiddles per object; the bit-reversal swap list
 /// (about N 16-bit indices) is a static constexpr table, in rodata/flash.
@@ -115,17 +112,16 @@ class Fft {
   /// vectors, the same operations per element, so the same bits.
   void forward(float* re, float* im) const {
 #if MPTRACK_FFT_X86_DISPATCH
-    if constexpr (N < kMinDispatchSize) {
-      forward_schedule<false>(re, im);
-      return;
-    }
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
-      forward_avx512(re, im);
-      return;
-    }
-    if (__builtin_cpu_supports("avx2")) {
-      forward_avx2(re, im);
-      return;
+    if constexpr (N >= kMinDispatchSize) {
+      const FftCopy copy = widest_fft_copy();
+      if (copy == FftCopy::kAvx512) {
+        forward_avx512(re, im);
+        return;
+      }
+      if (copy == FftCopy::kAvx2) {
+        forward_avx2(re, im);
+        return;
+      }
     }
 #endif
     forward_schedule<false>(re, im);
@@ -141,33 +137,24 @@ class Fft {
   /// copy on an AVX-512 host. False (nothing done) when this build or this
   /// CPU does not have that copy.
   bool forward_copy(FftCopy copy, float* re, float* im) const {
-    switch (copy) {
-      case FftCopy::kBaseline:
-        forward_schedule<false>(re, im);
-        return true;
+    if (!fft_copy_available(copy)) return false;
 #if MPTRACK_FFT_X86_DISPATCH
-      case FftCopy::kAvx2:
-        if (!__builtin_cpu_supports("avx2")) return false;
-        forward_avx2(re, im);
-        return true;
-      case FftCopy::kAvx512:
-        if (!__builtin_cpu_supports("avx512f") || !__builtin_cpu_supports("avx512vl")) return false;
-        forward_avx512(re, im);
-        return true;
-#endif
-      default:
-        return false;
+    if (copy == FftCopy::kAvx512) {
+      forward_avx512(re, im);
+      return true;
     }
+    if (copy == FftCopy::kAvx2) {
+      forward_avx2(re, im);
+      return true;
+    }
+#endif
+    forward_schedule<false>(re, im);
+    return true;
   }
 
   /// Which copy forward() runs on this CPU: "avx512", "avx2" or "baseline".
   static const char* dispatch_name() {
-#if MPTRACK_FFT_X86_DISPATCH
-    if (N < kMinDispatchSize) return "baseline";
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) return "avx512";
-    if (__builtin_cpu_supports("avx2")) return "avx2";
-#endif
-    return "baseline";
+    return N < kMinDispatchSize ? "baseline" : fft_copy_name(widest_fft_copy());
   }
 
   /// In-place inverse DFT (unscaled): the forward transform with re/im swapped.

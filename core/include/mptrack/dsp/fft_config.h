@@ -49,6 +49,40 @@
 
 namespace mptrack::dsp {
 
+/// The copies of an FFT schedule a build may hold (Fft::forward_copy,
+/// FftBatch::forward_copy): the baseline build's code and, on x86-64 hosts,
+/// the same schedule compiled for AVX2 or AVX-512 (same operations per
+/// element, so the same bits).
+enum class FftCopy { kBaseline, kAvx2, kAvx512 };
+
+/// True when this build holds `copy` and this CPU can run it.
+inline bool fft_copy_available(FftCopy copy) {
+  switch (copy) {
+    case FftCopy::kBaseline:
+      return true;
+#if MPTRACK_FFT_X86_DISPATCH
+    case FftCopy::kAvx2:
+      return __builtin_cpu_supports("avx2");
+    case FftCopy::kAvx512:
+      return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+#endif
+    default:
+      return false;
+  }
+}
+
+/// The widest copy this build and CPU can run: what forward() dispatches to.
+inline FftCopy widest_fft_copy() {
+  if (fft_copy_available(FftCopy::kAvx512)) return FftCopy::kAvx512;
+  if (fft_copy_available(FftCopy::kAvx2)) return FftCopy::kAvx2;
+  return FftCopy::kBaseline;
+}
+
+/// The copy's name in reports: "avx512", "avx2" or "baseline".
+constexpr const char* fft_copy_name(FftCopy copy) {
+  return copy == FftCopy::kAvx512 ? "avx512" : copy == FftCopy::kAvx2 ? "avx2" : "baseline";
+}
+
 /// Compile-time check: n is a power of two >= 2.
 constexpr bool is_power_of_two(std::size_t n) { return n >= 2 && (n & (n - 1)) == 0; }
 

@@ -26,7 +26,7 @@
 #include <array>
 #include <cstddef>
 
-#include "mptrack/dsp/fft.h"
+#include "mptrack/dsp/fft_batch.h"
 #include "mptrack/frontend/doppler_processor.h"
 #include "mptrack/frontend/frontend_params.h"
 #include "mptrack/frontend/window.h"
@@ -63,7 +63,7 @@ class AngleProcessor {
     MPTRACK_TRY(check_range(p.max_abs_bearing_rad, 1e-6,
                             mptrack::dmath::kHalfPi<double>));
     MPTRACK_TRY(check_at_most(p.angle_refine_iterations, 64));
-    MPTRACK_TRY(fft_.init());
+    MPTRACK_TRY(batch_.init());
     fill_window(p.angle_window, window_.data(), kNumVirtual);
     spacing_ = p.element_spacing_wavelengths;
     refine_iterations_ = p.angle_refine_iterations;
@@ -80,36 +80,18 @@ class AngleProcessor {
   /// Beamforms every (g, d) cell of dp into the power map.
   Status process(const DopplerProcessor<Caps>& dp) {
     if (!initialized_) return Status::kNotInitialized;
-    // Blocks of kBlock range bins, Doppler outside: each (d, a) row of the
-    // map [d][a][g] then receives kBlock adjacent values (one 64-byte line)
-    // while the block's snapshots stay in cache across d. Every cell's
-    // operations are unchanged; only the order of the cells.
+    // Blocks of kBlock range bins, one transform per lane (dsp::FftBatch:
+    // each lane gets the bits of Fft<kNa>::forward() on its cell), Doppler
+    // outside. Output row k of a block is the kBlock adjacent range bins of
+    // map line (d, a = (k + N_A/2) mod N_A): one 64-byte store run, where
+    // one transform per cell scattered down a column at stride
+    // kNumRangeBins. Every cell's operations are unchanged.
     for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
-      const std::size_t g_end = kNumRangeBins - g0 < kBlock ? kNumRangeBins : g0 + kBlock;
+      const std::size_t lanes = kNumRangeBins - g0 < kBlock ? kNumRangeBins - g0 : kBlock;
       for (std::size_t d = 0; d < kNc; ++d) {
-        for (std::size_t g = g0; g < g_end; ++g) {
-          const float* xr = dp.snapshot_re(g, d);
-          const float* xi = dp.snapshot_im(g, d);
-          for (std::size_t v = 0; v < kNumVirtual; ++v) {
-            buf_re_[v] = xr[v] * window_[v];
-            buf_im_[v] = xi[v] * window_[v];
-          }
-          for (std::size_t v = kNumVirtual; v < kNa; ++v) {
-            buf_re_[v] = 0.0f;
-            buf_im_[v] = 0.0f;
-          }
-          fft_.forward(buf_re_.data(), buf_im_.data());
-          // Powers in FFT order (one vector pass), then the fftshift
-          // scatter a = (k + N_A/2) mod N_A as two runs down the map
-          // column of cell (g, d).
-          for (std::size_t k = 0; k < kNa; ++k) {
-            pow_[k] = buf_re_[k] * buf_re_[k] + buf_im_[k] * buf_im_[k];
-          }
-          float* col = map_.data() + map_index(g, d, 0);
-          constexpr std::size_t kHalf = kNa / 2;
-          for (std::size_t k = 0; k < kHalf; ++k) col[(k + kHalf) * kNumRangeBins] = pow_[k];
-          for (std::size_t k = kHalf; k < kNa; ++k) col[(k - kHalf) * kNumRangeBins] = pow_[k];
-        }
+        load_block(dp, g0, lanes, d);
+        batch_.forward();
+        store_powers(g0, lanes, d);
       }
     }
     return Status::kOk;
@@ -197,11 +179,62 @@ class AngleProcessor {
   bool initialized() const { return initialized_; }
 
  private:
-  dsp::Fft<kNa> fft_{};
+  // Lane l of the batch = range bin g0 + l: the windowed snapshot of cell
+  // (g0 + l, d), zero-padded to N_A. Lanes past the last range bin (a
+  // partial last block) hold zeros, so they never grow or go NaN.
+  void load_block(const DopplerProcessor<Caps>& dp, std::size_t g0, std::size_t lanes,
+                  std::size_t d) {
+    // Channel outer: each input row is written as one run; the lanes'
+    // snapshots (kNumVirtual floats each) stay in L1 across v.
+    for (std::size_t v = 0; v < kNumVirtual; ++v) {
+      float* yr = batch_.input_re(v);
+      float* yi = batch_.input_im(v);
+      const float w = window_[v];
+      for (std::size_t l = 0; l < lanes; ++l) {
+        yr[l] = dp.snapshot_re(g0 + l, d)[v] * w;
+        yi[l] = dp.snapshot_im(g0 + l, d)[v] * w;
+      }
+      for (std::size_t l = lanes; l < kBlock; ++l) {
+        yr[l] = 0.0f;
+        yi[l] = 0.0f;
+      }
+    }
+    for (std::size_t v = kNumVirtual; v < kNa; ++v) {
+      zero_row(batch_.input_re(v), batch_.input_im(v));
+    }
+  }
+
+  // The no-alias facts as __restrict parameters, so GCC emits vector loops
+  // (it left both loops scalar with the rows and the map as plain pointers).
+  static void zero_row(float* __restrict re, float* __restrict im) {
+    for (std::size_t l = 0; l < kBlock; ++l) {
+      re[l] = 0.0f;
+      im[l] = 0.0f;
+    }
+  }
+  static void power_row(const float* __restrict re, const float* __restrict im,
+                        float* __restrict out) {
+    for (std::size_t l = 0; l < kBlock; ++l) out[l] = re[l] * re[l] + im[l] * im[l];
+  }
+
+  // |B|^2 of output row k to map line (d, a), fftshift a = (k + N_A/2) mod N_A.
+  void store_powers(std::size_t g0, std::size_t lanes, std::size_t d) {
+    constexpr std::size_t kHalf = kNa / 2;
+    for (std::size_t k = 0; k < kNa; ++k) {
+      const std::size_t a = k < kHalf ? k + kHalf : k - kHalf;
+      const float* br = batch_.output_re(k);
+      const float* bi = batch_.output_im(k);
+      float* out = map_.data() + map_index(g0, d, a);
+      if (lanes == kBlock) {
+        power_row(br, bi, out);
+      } else {
+        for (std::size_t l = 0; l < lanes; ++l) out[l] = br[l] * br[l] + bi[l] * bi[l];
+      }
+    }
+  }
+
+  dsp::FftBatch<kNa, kBlock> batch_{};
   std::array<float, kNumVirtual> window_{};
-  alignas(16) std::array<float, kNa> buf_re_{};
-  alignas(16) std::array<float, kNa> buf_im_{};
-  alignas(16) std::array<float, kNa> pow_{};
   std::array<float, kMapSize> map_{};
   std::array<bool, kNa> tested_{};
   double spacing_ = 0.5;
