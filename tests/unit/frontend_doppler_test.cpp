@@ -22,8 +22,8 @@ struct Stages {
 };
 
 double mag(const fe::DopplerProcessor<Caps>& d, std::size_t g, std::size_t dd, std::size_t v) {
-  return std::hypot(static_cast<double>(d.snapshot_value_re(g, dd, v)),
-                    static_cast<double>(d.snapshot_value_im(g, dd, v)));
+  return std::hypot(static_cast<double>(d.snapshot_re(g, dd)[v]),
+                    static_cast<double>(d.snapshot_im(g, dd)[v]));
 }
 
 }  // namespace
@@ -93,8 +93,8 @@ TEST_CASE("doppler: with one chirp the stage is a transpose (seed 004, no Dopple
   CHECK_FALSE(fe::DopplerProcessor<C1>::kHasDoppler);
   CHECK(dop->velocity_mps(0.0) == 0.0);
   for (std::size_t v = 0; v < 9; ++v) {
-    CHECK(dop->snapshot_value_re(17, 0, v) == rmf->value_re(0, v, 17));
-    CHECK(dop->snapshot_value_im(17, 0, v) == rmf->value_im(0, v, 17));
+    CHECK(dop->snapshot_re(17, 0)[v] == rmf->value_re(0, v, 17));
+    CHECK(dop->snapshot_im(17, 0)[v] == rmf->value_im(0, v, 17));
   }
 }
 

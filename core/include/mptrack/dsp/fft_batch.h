@@ -51,15 +51,6 @@ class FftBatch {
   float* input_re(std::size_t n) { return re_[kInputRow[n]].data(); }
   float* input_im(std::size_t n) { return im_[kInputRow[n]].data(); }
 
-  /// Input element n of lanes 0..lanes-1 from runs xr, xi scaled by w
-  /// (y = x w, one product per element: a window tap), zeros in the other
-  /// lanes (so unused lanes never grow or go NaN).
-  void load_scaled(std::size_t n, const float* xr, const float* xi, float w, std::size_t lanes) {
-    scale_run(xr, xi, w, input_re(n), input_im(n), lanes);
-  }
-  /// Input element n of every lane = 0 (zero padding).
-  void load_zero(std::size_t n) { scale_run(nullptr, nullptr, 0.0f, input_re(n), input_im(n), 0); }
-
   /// Output element k of lane l after forward(): output_re(k)[l].
   const float* output_re(std::size_t k) const { return re_[k].data(); }
   const float* output_im(std::size_t k) const { return im_[k].data(); }
@@ -118,27 +109,6 @@ class FftBatch {
     forward_schedule();
   }
 #endif
-
-  // __restrict parameters: GCC then emits vector loops (with plain
-  // pointers it left them scalar, unsure whether the rows alias the runs).
-  static void scale_run(const float* __restrict xr, const float* __restrict xi, float w,
-                        float* __restrict yr, float* __restrict yi, std::size_t lanes) {
-    if (lanes == L) {
-      for (std::size_t l = 0; l < L; ++l) {
-        yr[l] = xr[l] * w;
-        yi[l] = xi[l] * w;
-      }
-      return;
-    }
-    for (std::size_t l = 0; l < lanes; ++l) {
-      yr[l] = xr[l] * w;
-      yi[l] = xi[l] * w;
-    }
-    for (std::size_t l = lanes; l < L; ++l) {
-      yr[l] = 0.0f;
-      yi[l] = 0.0f;
-    }
-  }
 
   float* r(std::size_t k) { return re_[k].data(); }
   float* m(std::size_t k) { return im_[k].data(); }

@@ -123,12 +123,11 @@ class AngleProcessor {
   /// Refines the angle of the snapshot (g, d) around grid bin a.
   AngleEstimate refine(const DopplerProcessor<Caps>& dp, std::size_t g, std::size_t d,
                        std::size_t a) const {
-    std::array<float, kNumVirtual> xr{};
-    std::array<float, kNumVirtual> xi{};
-    dp.copy_snapshot(g, d, xr.data(), xi.data());
+    const float* xr = dp.snapshot_re(g, d);
+    const float* xi = dp.snapshot_im(g, d);
     AngleEstimate best;
     best.u = static_cast<float>(bin_u(a));
-    best.power = steering_power(xr.data(), xi.data(), best.u);
+    best.power = steering_power(xr, xi, best.u);
     if (refine_iterations_ == 0) return best;
     const float step = static_cast<float>(1.0 / (static_cast<double>(kNa) * spacing_));
     float lo = best.u - step;
@@ -139,8 +138,8 @@ class AngleProcessor {
     constexpr float kInvPhi = 0.618033988749894848f;
     float x1 = hi - kInvPhi * (hi - lo);
     float x2 = lo + kInvPhi * (hi - lo);
-    float f1 = steering_power(xr.data(), xi.data(), x1);
-    float f2 = steering_power(xr.data(), xi.data(), x2);
+    float f1 = steering_power(xr, xi, x1);
+    float f2 = steering_power(xr, xi, x2);
     for (std::size_t it = 0; it < refine_iterations_; ++it) {
       if (f1 > best.power) best = AngleEstimate{x1, f1};
       if (f2 > best.power) best = AngleEstimate{x2, f2};
@@ -149,13 +148,13 @@ class AngleProcessor {
         x2 = x1;
         f2 = f1;
         x1 = hi - kInvPhi * (hi - lo);
-        f1 = steering_power(xr.data(), xi.data(), x1);
+        f1 = steering_power(xr, xi, x1);
       } else {
         lo = x1;
         x1 = x2;
         f1 = f2;
         x2 = lo + kInvPhi * (hi - lo);
-        f2 = steering_power(xr.data(), xi.data(), x2);
+        f2 = steering_power(xr, xi, x2);
       }
     }
     if (f1 > best.power) best = AngleEstimate{x1, f1};
@@ -185,16 +184,34 @@ class AngleProcessor {
   // partial last block) hold zeros, so they never grow or go NaN.
   void load_block(const DopplerProcessor<Caps>& dp, std::size_t g0, std::size_t lanes,
                   std::size_t d) {
-    // Each input row is one run of range bins (the Doppler stage's layout).
+    // Channel outer: each input row is written as one run; the lanes'
+    // snapshots (kNumVirtual floats each) stay in L1 across v.
     for (std::size_t v = 0; v < kNumVirtual; ++v) {
-      batch_.load_scaled(v, dp.range_run_re(d, v) + g0, dp.range_run_im(d, v) + g0, window_[v],
-                         lanes);
+      float* yr = batch_.input_re(v);
+      float* yi = batch_.input_im(v);
+      const float w = window_[v];
+      for (std::size_t l = 0; l < lanes; ++l) {
+        yr[l] = dp.snapshot_re(g0 + l, d)[v] * w;
+        yi[l] = dp.snapshot_im(g0 + l, d)[v] * w;
+      }
+      for (std::size_t l = lanes; l < kBlock; ++l) {
+        yr[l] = 0.0f;
+        yi[l] = 0.0f;
+      }
     }
-    for (std::size_t v = kNumVirtual; v < kNa; ++v) batch_.load_zero(v);
+    for (std::size_t v = kNumVirtual; v < kNa; ++v) {
+      zero_row(batch_.input_re(v), batch_.input_im(v));
+    }
   }
 
-  // The no-alias facts as __restrict parameters, so GCC emits a vector loop
-  // (it left it scalar with the rows and the map as plain pointers).
+  // The no-alias facts as __restrict parameters, so GCC emits vector loops
+  // (it left both loops scalar with the rows and the map as plain pointers).
+  static void zero_row(float* __restrict re, float* __restrict im) {
+    for (std::size_t l = 0; l < kBlock; ++l) {
+      re[l] = 0.0f;
+      im[l] = 0.0f;
+    }
+  }
   static void power_row(const float* __restrict re, const float* __restrict im,
                         float* __restrict out) {
     for (std::size_t l = 0; l < kBlock; ++l) out[l] = re[l] * re[l] + im[l] * im[l];

@@ -17,23 +17,17 @@
 // With kNumChirps == 1 (seed 004) there is no FFT and no window: the stage
 // only transposes, and d = 0 is the single Doppler bin (v_r = 0).
 //
-// Output layout (what the angle stage consumes): channel-major rows of range
-// bins, planar, index (d * kNumVirtual + v) * kNumRangeBins + g, so the
-// angle stage's batch of adjacent range bins (dsp::FftBatch lanes) reads
-// each (d, v) as one run; snapshot_value_re(g, d, v) / copy_snapshot() give
-// one cell's kNumVirtual values.
-//
-// The slow-time transforms run as dsp::FftBatch over kBlock adjacent range
-// bins of one channel: each lane gets the bits of Fft<kNc>::forward() on its
-// windowed chirps, and output row k is the kBlock adjacent range bins of
-// one (d, v) row of the snapshots.
+// Output layout (what the angle stage consumes): snapshot of cell (g, d) is
+// kNumVirtual contiguous complex values, planar:
+//   index ((g * kNumChirps) + d) * kNumVirtual + v.
 #pragma once
 
 #include <array>
 #include <cstddef>
 
-#include "mptrack/dsp/fft_batch.h"
+#include "mptrack/dsp/fft.h"
 #include "mptrack/frontend/frontend_params.h"
+#include "mptrack/frontend/prefetch.h"
 #include "mptrack/frontend/range_matched_filter.h"
 #include "mptrack/frontend/window.h"
 #include "mptrack/status.h"
@@ -51,8 +45,6 @@ class DopplerProcessor {
   static constexpr std::size_t kNumRangeBins = Caps::kNumRangeBins;
   static constexpr std::size_t kNumCells = kNumRangeBins * kNc;
   static constexpr bool kHasDoppler = (kNc > 1);
-  /// Range bins per batch of slow-time transforms (16 floats: one 64-byte line).
-  static constexpr std::size_t kBlock = 16;
 
   Status init(const FrontEndParams& p) {
     initialized_ = false;
@@ -60,7 +52,7 @@ class DopplerProcessor {
     MPTRACK_TRY(check_positive(p.chirp_repetition_s));
     MPTRACK_TRY(check_positive(p.carrier_hz));
     if constexpr (kHasDoppler) {
-      MPTRACK_TRY(batch_.init());
+      MPTRACK_TRY(fft_.init());
       fill_window(p.doppler_window, window_.data(), kNc);
     } else {
       window_[0] = 1.0f;
@@ -75,45 +67,38 @@ class DopplerProcessor {
   /// Reads the range profiles of rmf and fills the snapshots.
   Status process(const RangeMatchedFilter<Caps>& rmf) {
     if (!initialized_) return Status::kNotInitialized;
-    for (std::size_t v = 0; v < kNumVirtual; ++v) {
-      if constexpr (kHasDoppler) {
-        for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
-          const std::size_t lanes = kNumRangeBins - g0 < kBlock ? kNumRangeBins - g0 : kBlock;
-          load_block(rmf, v, g0, lanes);
-          batch_.forward();
-          store_block(v, g0, lanes);
-        }
-      } else {
-        for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-          snap_re_[index(g, 0, v)] = rmf.value_re(0, v, g);
-          snap_im_[index(g, 0, v)] = rmf.value_im(0, v, g);
+    // Range bin outer, channel inner: each transform reads its kNc chirps
+    // as one run (the range stage's [v][g][c] layout) and the snapshots of
+    // bin g (kNc x kNumVirtual values per plane) stay in L1 while the
+    // kNumVirtual transforms fill them.
+    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+      for (std::size_t v = 0; v < kNumVirtual; ++v) {
+        if constexpr (kHasDoppler) {
+          // Next transform's run: the next channel (kNumRangeBins rows ahead)
+          // or, after the last channel, channel 0 of the next range bin.
+          const std::size_t v_next = v + 1 < kNumVirtual ? v + 1 : 0;
+          const std::size_t g_next = v + 1 < kNumVirtual ? g : g + 1;
+          if (g_next < kNumRangeBins) {
+            prefetch_read(rmf.chirps_re(v_next, g_next), kNc * sizeof(float));
+            prefetch_read(rmf.chirps_im(v_next, g_next), kNc * sizeof(float));
+          }
+          transform(rmf.chirps_re(v, g), rmf.chirps_im(v, g), g, v);
+        } else {
+          const std::size_t idx = g * kNumVirtual + v;
+          snap_re_[idx] = rmf.value_re(0, v, g);
+          snap_im_[idx] = rmf.value_im(0, v, g);
         }
       }
     }
     return Status::kOk;
   }
 
-  /// Snapshot value of range bin g, Doppler index d, virtual channel v.
-  float snapshot_value_re(std::size_t g, std::size_t d, std::size_t v) const {
-    return snap_re_[index(g, d, v)];
+  /// Planar snapshot (kNumVirtual values) of range bin g, Doppler index d.
+  const float* snapshot_re(std::size_t g, std::size_t d) const {
+    return &snap_re_[(g * kNc + d) * kNumVirtual];
   }
-  float snapshot_value_im(std::size_t g, std::size_t d, std::size_t v) const {
-    return snap_im_[index(g, d, v)];
-  }
-  /// Copies the kNumVirtual values of cell (g, d) to re[], im[].
-  void copy_snapshot(std::size_t g, std::size_t d, float* re, float* im) const {
-    for (std::size_t v = 0; v < kNumVirtual; ++v) {
-      re[v] = snap_re_[index(g, d, v)];
-      im[v] = snap_im_[index(g, d, v)];
-    }
-  }
-  /// Channel v's values at Doppler index d for range bins 0..kNumRangeBins-1
-  /// (one run: what the angle stage's batches read).
-  const float* range_run_re(std::size_t d, std::size_t v) const { return &snap_re_[index(0, d, v)]; }
-  const float* range_run_im(std::size_t d, std::size_t v) const { return &snap_im_[index(0, d, v)]; }
-
-  static constexpr std::size_t index(std::size_t g, std::size_t d, std::size_t v) {
-    return (d * kNumVirtual + v) * kNumRangeBins + g;
+  const float* snapshot_im(std::size_t g, std::size_t d) const {
+    return &snap_im_[(g * kNc + d) * kNumVirtual];
   }
 
   /// Radial velocity of (possibly fractional) Doppler index d [m/s], positive receding.
@@ -136,45 +121,32 @@ class DopplerProcessor {
   bool initialized() const { return initialized_; }
 
  private:
-  // Lane l = range bin g0 + l of channel v: its windowed chirps (each
-  // element w[c] x); input row c is one run of chirp c's range profile.
-  void load_block(const RangeMatchedFilter<Caps>& rmf, std::size_t v, std::size_t g0,
-                  std::size_t lanes) {
+  // Slow-time FFT of channel v at range bin g: windowed copy (each element
+  // w[c] x), one FFT, and the fftshift scatter d = (k + kNc/2) mod kNc as
+  // two runs (no modulo per element).
+  void transform(const float* pr, const float* pi, std::size_t g, std::size_t v) {
     for (std::size_t c = 0; c < kNc; ++c) {
-      batch_.load_scaled(c, rmf.profile_re(c, v) + g0, rmf.profile_im(c, v) + g0, window_[c],
-                         lanes);
+      buf_re_[c] = pr[c] * window_[c];
+      buf_im_[c] = pi[c] * window_[c];
     }
-  }
-
-  // Output row k to snapshot row (d = (k + kNc/2) mod kNc, v): one run of
-  // range bins (fftshift without modulo).
-  void store_block(std::size_t v, std::size_t g0, std::size_t lanes) {
+    fft_.forward(buf_re_.data(), buf_im_.data());
+    float* sr = snap_re_.data() + g * kNc * kNumVirtual + v;
+    float* si = snap_im_.data() + g * kNc * kNumVirtual + v;
     constexpr std::size_t kHalf = kNc / 2;
-    for (std::size_t k = 0; k < kNc; ++k) {
-      const std::size_t d = k < kHalf ? k + kHalf : k - kHalf;
-      copy_run(batch_.output_re(k), batch_.output_im(k), &snap_re_[index(g0, d, v)],
-               &snap_im_[index(g0, d, v)], lanes);
+    for (std::size_t k = 0; k < kHalf; ++k) {
+      sr[(k + kHalf) * kNumVirtual] = buf_re_[k];
+      si[(k + kHalf) * kNumVirtual] = buf_im_[k];
+    }
+    for (std::size_t k = kHalf; k < kNc; ++k) {
+      sr[(k - kHalf) * kNumVirtual] = buf_re_[k];
+      si[(k - kHalf) * kNumVirtual] = buf_im_[k];
     }
   }
 
-  // __restrict parameters so GCC emits vector copies.
-  static void copy_run(const float* __restrict re, const float* __restrict im,
-                       float* __restrict out_re, float* __restrict out_im, std::size_t lanes) {
-    if (lanes == kBlock) {
-      for (std::size_t l = 0; l < kBlock; ++l) {
-        out_re[l] = re[l];
-        out_im[l] = im[l];
-      }
-    } else {
-      for (std::size_t l = 0; l < lanes; ++l) {
-        out_re[l] = re[l];
-        out_im[l] = im[l];
-      }
-    }
-  }
-
-  dsp::FftBatch<(kNc > 1 ? kNc : 2), (kNc > 1 ? kBlock : 1)> batch_{};
+  dsp::Fft<(kNc > 1 ? kNc : 2)> fft_{};
   std::array<float, kNc> window_{};
+  alignas(64) std::array<float, (kNc > 1 ? kNc : 1)> buf_re_{};
+  alignas(64) std::array<float, (kNc > 1 ? kNc : 1)> buf_im_{};
   std::array<float, kNumCells * kNumVirtual> snap_re_{};
   std::array<float, kNumCells * kNumVirtual> snap_im_{};
   double velocity_per_bin_mps_ = 0.0;
