@@ -9,7 +9,7 @@
 // butterfly is a run of L adjacent floats: a whole vector register per row
 // on any SIMD target, no permutation at all (the caller writes input n
 // straight into row rev(n)), and output row k is already the L adjacent
-// range bins of one map line (docs/algorithms/frontend.md §Angle).
+// range bins of one map line (docs/algorithms/frontend.md §FFT).
 //
 // Bit-exactness: the schedule is the textbook one of tests/unit/
 // fft_reorder_test.cpp (bit reversal, then radix 2 when log2 N is odd or
@@ -51,26 +51,16 @@ class FftBatch {
   float* input_re(std::size_t n) { return re_[kInputRow[n]].data(); }
   float* input_im(std::size_t n) { return im_[kInputRow[n]].data(); }
 
+  /// Input element n of every lane = 0 (zero padding).
+  void zero_input(std::size_t n) { zero_run(input_re(n), input_im(n)); }
+
   /// Output element k of lane l after forward(): output_re(k)[l].
   const float* output_re(std::size_t k) const { return re_[k].data(); }
   const float* output_im(std::size_t k) const { return im_[k].data(); }
 
   /// Forward DFT of every lane, unscaled, as Fft<N>::forward() (in place:
   /// the input rows become the output rows). Precondition: init() succeeded.
-  void forward() {
-#if MPTRACK_FFT_X86_DISPATCH
-    const FftCopy copy = widest_fft_copy();
-    if (copy == FftCopy::kAvx512) {
-      forward_avx512();
-      return;
-    }
-    if (copy == FftCopy::kAvx2) {
-      forward_avx2();
-      return;
-    }
-#endif
-    forward_schedule();
-  }
+  void forward() { static_cast<void>(forward_copy(widest_fft_copy())); }
 
   /// Runs one copy of the schedule (tests: every copy gives the same
   /// bits). False, nothing done, when this build or CPU lacks that copy.
@@ -109,6 +99,15 @@ class FftBatch {
     forward_schedule();
   }
 #endif
+
+  // __restrict parameters: GCC then emits vector stores (with the rows as
+  // plain pointers it left the loop scalar).
+  static void zero_run(float* __restrict re, float* __restrict im) {
+    for (std::size_t l = 0; l < L; ++l) {
+      re[l] = 0.0f;
+      im[l] = 0.0f;
+    }
+  }
 
   float* r(std::size_t k) { return re_[k].data(); }
   float* m(std::size_t k) { return im_[k].data(); }

@@ -199,19 +199,11 @@ class AngleProcessor {
         yi[l] = 0.0f;
       }
     }
-    for (std::size_t v = kNumVirtual; v < kNa; ++v) {
-      zero_row(batch_.input_re(v), batch_.input_im(v));
-    }
+    for (std::size_t v = kNumVirtual; v < kNa; ++v) batch_.zero_input(v);
   }
 
-  // The no-alias facts as __restrict parameters, so GCC emits vector loops
-  // (it left both loops scalar with the rows and the map as plain pointers).
-  static void zero_row(float* __restrict re, float* __restrict im) {
-    for (std::size_t l = 0; l < kBlock; ++l) {
-      re[l] = 0.0f;
-      im[l] = 0.0f;
-    }
-  }
+  // The no-alias facts as __restrict parameters, so GCC emits a vector loop
+  // (it left it scalar with the rows and the map as plain pointers).
   static void power_row(const float* __restrict re, const float* __restrict im,
                         float* __restrict out) {
     for (std::size_t l = 0; l < kBlock; ++l) out[l] = re[l] * re[l] + im[l] * im[l];
