@@ -42,9 +42,12 @@ void conv_relu_pool(const float* in, const float* wgt, const float* bias, float*
               const float* x_ic = in + ic * H * W;
               const float* w_ic = w_oc + ic * Kh * Kw;
               for (std::size_t kh = kh0; kh < kh1; ++kh) {
-                const float* x_row = x_ic + (h + kh - kPadH) * W + (w - kPadW);
+                // Indexed from the row start: w + kw - kPadW >= 0 for kw >= kw0. A
+                // row pointer offset by (w - kPadW) would point before the array at
+                // the left edge, which is undefined (clang's UBSan reports it).
+                const float* x_row = x_ic + (h + kh - kPadH) * W;
                 const float* w_row = w_ic + kh * Kw;
-                for (std::size_t kw = kw0; kw < kw1; ++kw) acc += w_row[kw] * x_row[kw];
+                for (std::size_t kw = kw0; kw < kw1; ++kw) acc += w_row[kw] * x_row[w + kw - kPadW];
               }
             }
             const float v = acc + bias[oc];
