@@ -176,8 +176,8 @@ TEST_CASE_TEMPLATE("dexpm1 is within 1.5 ulp, also for tiny arguments", T, float
 TEST_CASE_TEMPLATE("dlog is within 1 ulp from the smallest subnormal to max", T, float, double) {
   auto f = [](T x) { return dm::dlog(x); };
   auto ref = [](long double x) { return std::log(x); };
-  const long double lo = std::numeric_limits<T>::denorm_min();
-  const long double hi = std::numeric_limits<T>::max();
+  const long double lo = static_cast<long double>(std::numeric_limits<T>::denorm_min());
+  const long double hi = static_cast<long double>(std::numeric_limits<T>::max());
   const Worst w = worse(measure<T>(f, ref, lo, hi, true), measure<T>(f, ref, 0.5L, 2.0L, false));
   report<T>("dlog", "[denorm_min, max]", w, 1.0L);
 }
@@ -217,8 +217,8 @@ TEST_CASE_TEMPLATE("dsin and dcos stay accurate next to multiples of pi/2", T, f
     const long double target = static_cast<long double>(k) * 1.5707963267948966192313216916397514L;
     T x = static_cast<T>(target);
     for (int step = 0; step < 3; ++step) {
-      w.take(ulp_error<T>(dm::dsin(x), std::sin(static_cast<long double>(x))), x);
-      w.take(ulp_error<T>(dm::dcos(x), std::cos(static_cast<long double>(x))), x);
+      w.take(ulp_error<T>(dm::dsin(x), std::sin(static_cast<long double>(x))), static_cast<long double>(x));
+      w.take(ulp_error<T>(dm::dcos(x), std::cos(static_cast<long double>(x))), static_cast<long double>(x));
       x = std::nextafter(x, std::numeric_limits<T>::infinity());
     }
   }

@@ -144,7 +144,7 @@ TEST_CASE("GNN: a single clutter point lives as a tentative track for 3 scans") 
   REQUIRE(trk->outputs()[0].tracks.size() == 1);
   const auto& r = trk->outputs()[0].tracks[0];
   CHECK_FALSE(r.confirmed);
-  CHECK(r.existence == doctest::Approx(0.2f));  // 1 hit of 5
+  CHECK(r.existence == doctest::Approx(0.2));  // 1 hit of 5
   CHECK(r.state(1) == 0.0f);                    // velocity starts at 0
   for (std::uint64_t k = 1; k < 3; ++k) {
     REQUIRE(trk->step(make_scan(k, {})) == Status::kOk);
@@ -246,7 +246,7 @@ TEST_CASE("GNN: NaN, Inf and out-of-region measurements are skipped and counted"
   CHECK(trk->counters().tracks_born == 1);
   REQUIRE(trk->outputs()[0].tracks.size() == 1);
   CHECK(trk->outputs()[0].tracks[0].measurement_index == 1);  // index in the scan as given
-  CHECK(trk->outputs()[0].tracks[0].state(0) == doctest::Approx(20.0f).epsilon(1e-5));
+  CHECK(trk->outputs()[0].tracks[0].state(0) == doctest::Approx(20.0).epsilon(1e-5));
   CHECK(trk->step(make_scan(1, {good})) == Status::kOk);
 }
 

@@ -189,5 +189,5 @@ TEST_CASE("GOSPA with 64 points allocates nothing") {
   }
   CHECK(st == Status::kOk);
   CHECK(r.num_matched == 64);
-  CHECK(r.total == doctest::Approx(8.0f).epsilon(1e-4));
+  CHECK(r.total == doctest::Approx(8.0).epsilon(1e-4));
 }

@@ -138,7 +138,7 @@ TEST_CASE("F8: GM-CPHD (known uniform clutter) keeps finite weights across a 23.
   }
   // the weights still sum to the mean cardinality (they did not before:
   // 0.06 against 3.0 with an amplitude of 9999)
-  CHECK(total == doctest::Approx(static_cast<float>(f->expected_targets())).epsilon(1e-3));
+  CHECK(total == doctest::Approx(static_cast<double>(f->expected_targets())).epsilon(1e-3));
   REQUIRE(f->outputs()[0].tracks.size() == 3);
   for (const auto& t : f->outputs()[0].tracks) CHECK(mptrack::is_finite(t.state(0)));
 }
@@ -329,8 +329,8 @@ TEST_CASE("F12: a GNN track born near range 0 has a positive definite covariance
   }
   // far from 0 the floor does not bind: cross-range variance (r sigma_az)^2
   mptrack::gnn::polar_initiate(100.0f, 0.0f, 0.2f, 0.01f, 10.0f, x, P);
-  CHECK(P(2, 2) == doctest::Approx(1.0f));
-  CHECK(P(0, 0) == doctest::Approx(0.04f));
+  CHECK(P(2, 2) == doctest::Approx(1.0));
+  CHECK(P(0, 0) == doctest::Approx(0.04));
 }
 
 TEST_CASE("F12: RfsFilterParams rejects a polar azimuth std whose derived clutter count overflows") {

@@ -30,7 +30,7 @@ TEST_CASE("elapsed time is the gap to the last accepted scan, or the default fir
   CHECK(clock.elapsed_s(5'000'000, 1.25) == 1.25);
   clock.advance(5'000'000);
   CHECK(clock.elapsed_s(6'250'000, 1.25) == doctest::Approx(1.25));
-  CHECK(clock.elapsed_s(5'500'000, 1.25f) == doctest::Approx(0.5f));
+  CHECK(clock.elapsed_s(5'500'000, 1.25f) == doctest::Approx(0.5));
   clock.reset();
   CHECK_FALSE(clock.has_time());
 }

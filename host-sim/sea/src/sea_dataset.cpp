@@ -134,7 +134,8 @@ DatasetCounts build_dataset(const DatasetConfig& config) {
         for (std::size_t j = 0; j < det->num_plots(); ++j) {
           const seaclutter::SeaPlot& p = det->plot(j);
           scene.plots.back().push_back(p);
-          const int t = label_plot(p.range_m, p.doppler_bin, scan.truth, config.label);
+          const int t = label_plot(static_cast<double>(p.range_m), static_cast<double>(p.doppler_bin), scan.truth,
+                                   config.label);
           if (t >= 0) seen[static_cast<std::size_t>(t)] = true;
           const auto& patch = det->patch(j);
           col.patches.insert(col.patches.end(), patch.begin(), patch.end());

@@ -142,8 +142,8 @@ void SeaSceneGenerator::synthesize_clutter(SeaScan& out, double time_s) {
     fft_.inverse(re, im);
     const double sn = std::sqrt(out.noise_power / 2.0);
     for (std::size_t p = 0; p < n_p; ++p) {
-      const double cr = re[p];
-      const double ci = im[p];
+      const double cr = static_cast<double>(re[p]);
+      const double ci = static_cast<double>(im[p]);
       power_sum += cr * cr + ci * ci;
       out.re[m * n_p + p] = static_cast<float>(cr + sn * noise.normal());
       out.im[m * n_p + p] = static_cast<float>(ci + sn * noise.normal());
