@@ -10,7 +10,9 @@
 // CA, GO, SO: each cell is quantised once, q = trunc(x 2^s), with 2^s chosen
 // from the line's maximum so that a quantised cell is below 2^24 and 2T <= 128
 // of them sum below 2^31; the training sums W are differences of a running
-// (modular, uint32) sum, so each costs four loads whatever T. Truncation
+// (modular, uint32) sum, so each costs four loads whatever T (an edge cell,
+// within G + T of an end: up to twelve, from segment tables planned once per
+// parameter set, docs/algorithms/frontend.md §Peaks, "Threshold first"). Truncation
 // only lowers a cell, so W 2^-s <= the exact training sum S. Cfar::test()
 // computes z = fl(fl(sum in index order) / n) and detects P > fl(alpha z);
 // over n <= 128 non-negative terms the float sum is >= S (1 - 127 u), so
@@ -64,18 +66,20 @@ class CfarScreen {
         kLen < cfar.min_line_length()) {
       return keep_all(lo, hi);
     }
-    // Largest and smallest bit pattern: for floats >= +0 the patterns order
+    // Largest bit pattern and any sign bit: for floats >= +0 the patterns order
     // as the values; a negative value (sign bit) is below 0, Inf and NaN are
-    // at or above 0x7f800000. Integer max/min vectorise.
+    // at or above 0x7f800000. Any sign bit is found by OR-ing the patterns
+    // (one instruction per vector: SSE2 has no integer min), and with none
+    // set the integer max is the largest value. Both vectorise.
     std::int32_t bmax = 0;
-    std::int32_t bmin = 0;
+    std::int32_t sign_or = 0;
     for (std::size_t i = 0; i < kLen; ++i) {
       std::int32_t b = 0;
       std::memcpy(&b, line + i, sizeof b);
       bmax = b > bmax ? b : bmax;
-      bmin = b < bmin ? b : bmin;
+      sign_or |= b;
     }
-    if (bmin < 0 || bmax >= kInfBits) return keep_all(lo, hi);
+    if (sign_or < 0 || bmax >= kInfBits) return keep_all(lo, hi);
     if (bmax == 0) return 0;  // every cell +0: no cell has power > 0, none can pass
     float max_value = 0.0f;
     std::memcpy(&max_value, &bmax, sizeof max_value);
@@ -105,9 +109,14 @@ class CfarScreen {
       interior_flags<false>(line, first, last, k, p);
     }
     const std::size_t edge_lo_end = first < hi ? first : hi;  // [lo, edge_lo_end): lower edge
-    for (std::size_t i = lo; i < edge_lo_end; ++i) flags_[i] = edge_flag(line, i, k, p, so);
-    for (std::size_t i = (last > edge_lo_end ? last : edge_lo_end); i < hi; ++i) {
-      flags_[i] = edge_flag(line, i, k, p, so);
+    const std::size_t edge_hi_begin = last > edge_lo_end ? last : edge_lo_end;
+    if (p.edge == CfarEdge::kSkip) {  // untested, never detected
+      for (std::size_t i = lo; i < edge_lo_end; ++i) flags_[i] = 0;
+      for (std::size_t i = edge_hi_begin; i < hi; ++i) flags_[i] = 0;
+    } else {
+      plan_edges(p);
+      edges(line, lo, edge_lo_end, k, p.edge == CfarEdge::kWrap, so);
+      edges(line, edge_hi_begin, hi, k, p.edge == CfarEdge::kWrap, so);
     }
     collect(lo, hi);
     return count_;
@@ -120,6 +129,9 @@ class CfarScreen {
   static constexpr float kFloatMax = std::numeric_limits<float>::max();
   static constexpr float kFloatMin = std::numeric_limits<float>::min();  ///< smallest normal
   static constexpr std::int32_t kInfBits = 0x7f800000;                   ///< bit pattern of +Inf
+  /// Edge cells per end: G + T <= 128 (CfarParams::validate) and a screened
+  /// line holds 2 (G + T) + 1 cells (min_line_length), so G + T <= (kLen - 1) / 2.
+  static constexpr std::size_t kEdgeHalf = (kLen - 1) / 2 < 128 ? (kLen - 1) / 2 : 128;
 
   /// 2^k as a double, exact, for |k| <= 1000 (here |k| <= 90).
   static double pow2(int k) {
@@ -151,12 +163,6 @@ class CfarScreen {
     }
   }
 
-  /// Sum of the quantised cells [a, a + n) (indices taken mod kLen).
-  std::uint32_t run_sum(std::size_t a, std::size_t n) const {
-    if (a + n <= kLen) return prefix_[a + n] - prefix_[a];
-    return (prefix_[kLen] - prefix_[a]) + prefix_[a + n - kLen];
-  }
-
   // Interior cells (both runs inside the line, unwrapped), the bulk of the
   // line: two runs at fixed offsets, straight-line arithmetic that vectorises.
   template <bool kSo>
@@ -173,14 +179,46 @@ class CfarScreen {
     }
   }
 
+  /// Training cells of one edge cell as prefix-sum segments: half h's sum is
+  /// the sum over s of q[end[h][s]] - q[begin[h][s]]; unused segments are
+  /// [0, 0). Half 0 is the left half (the first T cells of the gather order).
+  /// Segments per half: two runs, and only run 1 (lower edge) or run 2
+  /// (upper edge) can wrap, since G + T <= (kLen - 1) / 2: at most three,
+  /// and two where nothing wraps (kShift).
+  static constexpr std::size_t kSegments = 3;
+  static constexpr std::size_t kShiftSegments = 2;
+  struct EdgeRuns {
+    std::array<std::array<std::uint16_t, kSegments>, 2> begin{};
+    std::array<std::array<std::uint16_t, kSegments>, 2> end{};
+  };
+
   // A cell within G + T of an end: its two runs as Cfar::gather_training()
   // takes them (kShift: the deficit moves to the other side; kWrap:
-  // circular; kSkip: untested, never detected).
-  std::uint8_t edge_flag(const float* line, std::size_t i, float k, const CfarParams& p, bool so) const {
+  // circular), as prefix-sum segments, computed once per (G, T, edge) and
+  // reused for every line until the parameters change.
+  void plan_edges(const CfarParams& p) {
+    if (planned_ && p.guard_cells == plan_guard_ && p.training_cells == plan_training_ && p.edge == plan_edge_) {
+      return;
+    }
+    const std::size_t reach = p.guard_cells + p.training_cells;
+    for (std::size_t i = 0; i < reach; ++i) {
+      edges_[edge_slot(i)] = edge_runs(i, p);
+      edges_[edge_slot(kLen - 1 - i)] = edge_runs(kLen - 1 - i, p);
+    }
+    plan_guard_ = p.guard_cells;
+    plan_training_ = p.training_cells;
+    plan_edge_ = p.edge;
+    planned_ = true;
+  }
+
+  /// Table slot of an edge cell: i < G + T <= kEdgeHalf, or kLen - 1 - i < G + T.
+  static std::size_t edge_slot(std::size_t i) { return i < kEdgeHalf ? i : kEdgeHalf + (kLen - 1 - i); }
+
+  static EdgeRuns edge_runs(std::size_t i, const CfarParams& p) {
     const std::size_t g = p.guard_cells;
     const std::size_t t = p.training_cells;
     const std::size_t reach = g + t;
-    std::size_t a = 0;  // run 1 [a, a + na), then run 2 [c, c + nc), gather order
+    std::size_t a = 0;  // run 1 [a, a + na), then run 2 [c, c + nc), gather order, mod kLen
     std::size_t na = 0;
     std::size_t c = 0;
     std::size_t nc = 0;
@@ -189,8 +227,6 @@ class CfarScreen {
       na = t;
       c = (i + g + 1) % kLen;
       nc = t;
-    } else if (p.edge == CfarEdge::kSkip) {
-      return 0;
     } else if (i < reach) {
       const std::size_t have = i > g ? i - g : 0;
       a = have > t ? have - t : 0;
@@ -204,23 +240,79 @@ class CfarScreen {
       na = 2 * t - nc;
       a = i - g - na;
     }
-    std::uint32_t w = 0;
-    if (!so) {
-      w = run_sum(a, na) + (nc > 0 ? run_sum(c, nc) : 0u);
+    // Left half: run 1's first min(na, T) cells, then run 2's first T - that.
+    const std::size_t na_left = na < t ? na : t;
+    const std::size_t nc_left = t - na_left;
+    EdgeRuns e;
+    std::array<std::size_t, 2> used{};
+    add_run(e, 0, used, a, na_left);
+    add_run(e, 0, used, c, nc_left);
+    add_run(e, 1, used, (a + na_left) % kLen, na - na_left);
+    add_run(e, 1, used, (c + nc_left) % kLen, nc - nc_left);
+    return e;
+  }
+
+  /// Appends the cells [from, from + n) mod kLen to half h: one segment, or
+  /// two where the run wraps past the end of the line.
+  static void add_run(EdgeRuns& e, std::size_t h, std::array<std::size_t, 2>& used, std::size_t from,
+                      std::size_t n) {
+    if (n == 0) return;
+    const std::size_t to = from + n <= kLen ? from + n : kLen;
+    add_segment(e, h, used, from, to);
+    if (from + n > kLen) add_segment(e, h, used, 0, from + n - kLen);
+  }
+
+  static void add_segment(EdgeRuns& e, std::size_t h, std::array<std::size_t, 2>& used, std::size_t b,
+                          std::size_t en) {
+    // Never more than kSegments; were one dropped, W would only be lower
+    // (every segment sums cells >= 0): more cells kept, never fewer.
+    if (used[h] == kSegments) return;
+    e.begin[h][used[h]] = static_cast<std::uint16_t>(b);
+    e.end[h][used[h]] = static_cast<std::uint16_t>(en);
+    ++used[h];
+  }
+
+  /// Flags of edge cells [from, to), with the loop shape fixed per policy.
+  void edges(const float* line, std::size_t from, std::size_t to, float k, bool wrap, bool so) {
+    if (wrap && so) {
+      edge_flags<kSegments, true>(line, from, to, k);
+    } else if (wrap) {
+      edge_flags<kSegments, false>(line, from, to, k);
+    } else if (so) {
+      edge_flags<kShiftSegments, true>(line, from, to, k);
     } else {
-      // First T cells of the gather order (left half) against the rest.
-      const std::size_t from_c = na >= t ? 0 : t - na;
-      const std::uint32_t wl = run_sum(a, na < t ? na : t) + (from_c > 0 ? run_sum(c, from_c) : 0u);
-      const std::uint32_t wr = (na > t ? run_sum(a + t, na - t) : 0u) +
-                               (nc > from_c ? run_sum(c + from_c, nc - from_c) : 0u);
-      w = wl < wr ? wl : wr;
+      edge_flags<kShiftSegments, false>(line, from, to, k);
     }
-    return static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+  }
+
+  /// The interior's test on the planned runs: kSegs segments per half.
+  template <std::size_t kSegs, bool kSo>
+  void edge_flags(const float* line, std::size_t from, std::size_t to, float k) {
+    const std::uint32_t* q = prefix_.data();
+    for (std::size_t i = from; i < to; ++i) {
+      const EdgeRuns& e = edges_[edge_slot(i)];
+      std::uint32_t wl = 0;
+      std::uint32_t wr = 0;
+      for (std::size_t s = 0; s < kSegs; ++s) {
+        wl += q[e.end[0][s]] - q[e.begin[0][s]];
+        wr += q[e.end[1][s]] - q[e.begin[1][s]];
+      }
+      // Modular sums of exact integer sums (each < 2^31): CA's whole-window
+      // sum is the same number however its cells are grouped.
+      std::uint32_t w = wl + wr;
+      if constexpr (kSo) w = wl < wr ? wl : wr;
+      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+    }
   }
 
   std::array<std::uint32_t, kLen + 1> prefix_{};  ///< running sums of the quantised cells (mod 2^32)
   std::array<std::uint8_t, kLen> flags_{};        ///< 1: cell kept
   std::array<std::uint16_t, kLen> cells_{};       ///< kept cells, ascending
+  std::array<EdgeRuns, 2 * kEdgeHalf> edges_{};   ///< training runs of the edge cells (plan_edges)
+  std::size_t plan_guard_ = 0;                    ///< parameters edges_ was planned for
+  std::size_t plan_training_ = 0;
+  CfarEdge plan_edge_ = CfarEdge::kShift;
+  bool planned_ = false;
   std::size_t count_ = 0;
 };
 
