@@ -11,8 +11,10 @@
 // from the line's maximum so that a quantised cell is below 2^24 and 2T <= 128
 // of them sum below 2^31; the training sums W are differences of a running
 // (modular, uint32) sum, so each costs four loads whatever T (an edge cell,
-// within G + T of an end: up to twelve, from segment tables planned once per
-// parameter set, docs/algorithms/frontend.md §Peaks, "Threshold first"). Truncation
+// within G + T of an end: up to six for CA and GO, twelve for SO, from
+// segment tables planned once per parameter set, docs/algorithms/frontend.md
+// §Peaks, "Threshold first"). On x86-64 hosts it runs compiled for AVX2 or
+// AVX-512 where the CPU has them (run_copy; the same cells). Truncation
 // only lowers a cell, so W 2^-s <= the exact training sum S. Cfar::test()
 // computes z = fl(fl(sum in index order) / n) and detects P > fl(alpha z);
 // over n <= 128 non-negative terms the float sum is >= S (1 - 127 u), so
@@ -42,6 +44,7 @@
 #include <cstring>
 #include <limits>
 
+#include "mptrack/dsp/fft_config.h"
 #include "mptrack/frontend/cfar.h"
 
 namespace mptrack::frontend {
@@ -59,7 +62,49 @@ class CfarScreen {
   /// Screens cells [lo, hi) of line[0..kLen) for `cfar`; returns how many
   /// are kept (cells(), ascending). Precondition: cfar initialised with
   /// min_line_length() <= kLen (FrontEnd::validate), hi <= kLen.
+  /// Runs the widest copy this CPU has (run_copy).
   std::size_t run(const Cfar& cfar, const float* line, std::size_t lo, std::size_t hi) {
+    return run_copy(dsp::widest_fft_copy(), cfar, line, lo, hi);
+  }
+
+  /// The screen compiled for one ISA: on x86-64 hosts, the FFT's copies
+  /// (dsp/fft_config.h: baseline SSE2, AVX2, AVX-512, never FMA). Integer
+  /// sums and one float product and compare per cell, so every copy keeps
+  /// the same cells (tests/unit/cfar_screen_test.cpp). A copy this build or
+  /// CPU lacks falls back to the baseline.
+  std::size_t run_copy(dsp::FftCopy copy, const Cfar& cfar, const float* line, std::size_t lo,
+                       std::size_t hi) {
+#if MPTRACK_FFT_X86_DISPATCH
+    if (dsp::fft_copy_available(copy)) {
+      if (copy == dsp::FftCopy::kAvx512) return run_avx512(cfar, line, lo, hi);
+      if (copy == dsp::FftCopy::kAvx2) return run_avx2(cfar, line, lo, hi);
+    }
+#else
+    static_cast<void>(copy);
+#endif
+    return screen(cfar, line, lo, hi);
+  }
+
+  std::size_t size() const { return count_; }
+  const std::uint16_t* cells() const { return cells_.data(); }
+
+ private:
+#if MPTRACK_FFT_X86_DISPATCH
+  __attribute__((target("avx2"), noinline)) std::size_t run_avx2(const Cfar& cfar,
+                                                                 const float* line, std::size_t lo,
+                                                                 std::size_t hi) {
+    return screen(cfar, line, lo, hi);
+  }
+  __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) std::size_t
+  run_avx512(const Cfar& cfar, const float* line, std::size_t lo, std::size_t hi) {
+    return screen(cfar, line, lo, hi);
+  }
+#endif
+
+  // The screen itself; every helper is force-inlined (MPTRACK_FFT_INLINE), so
+  // each copy compiles all of it for its own ISA.
+  MPTRACK_FFT_INLINE std::size_t screen(const Cfar& cfar, const float* line, std::size_t lo,
+                                        std::size_t hi) {
     count_ = 0;
     const CfarParams& p = cfar.params();
     if (p.type == CfarType::kOrderedStatistic || !cfar.initialized() ||
@@ -94,12 +139,12 @@ class CfarScreen {
     if (!(kd >= static_cast<double>(kFloatMin) && kd <= static_cast<double>(kFloatMax))) return keep_all(lo, hi);
     const float k = static_cast<float>(kd);
     const float scale = static_cast<float>(pow2(kQuantBits - e));  // exact power of two, normal
-    // Quantise (vectorises), then the running sum (one add per cell).
+    // Quantise (vectorises), then the running sum.
     for (std::size_t i = 0; i < kLen; ++i) {
       prefix_[i + 1] = static_cast<std::uint32_t>(static_cast<std::int32_t>(line[i] * scale));
     }
     prefix_[0] = 0;
-    for (std::size_t i = 1; i <= kLen; ++i) prefix_[i] += prefix_[i - 1];
+    running_sum();
     const std::size_t reach = p.guard_cells + p.training_cells;
     const std::size_t first = lo > reach ? lo : reach;  // interior cells: [first, last)
     const std::size_t last = hi < kLen - reach ? hi : kLen - reach;
@@ -122,10 +167,6 @@ class CfarScreen {
     return count_;
   }
 
-  std::size_t size() const { return count_; }
-  const std::uint16_t* cells() const { return cells_.data(); }
-
- private:
   static constexpr float kFloatMax = std::numeric_limits<float>::max();
   static constexpr float kFloatMin = std::numeric_limits<float>::min();  ///< smallest normal
   static constexpr std::int32_t kInfBits = 0x7f800000;                   ///< bit pattern of +Inf
@@ -134,21 +175,49 @@ class CfarScreen {
   static constexpr std::size_t kEdgeHalf = (kLen - 1) / 2 < 128 ? (kLen - 1) / 2 : 128;
 
   /// 2^k as a double, exact, for |k| <= 1000 (here |k| <= 90).
-  static double pow2(int k) {
+  MPTRACK_FFT_INLINE static double pow2(int k) {
     const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
     double x = 0.0;
     std::memcpy(&x, &bits, sizeof x);
     return x;
   }
 
-  std::size_t keep_all(std::size_t lo, std::size_t hi) {
+  // prefix_[i] = q_0 + ... + q_{i-1} (mod 2^32). One chain of kLen dependent
+  // adds is latency-bound (perf: a fifth of detect()), so the line is cut
+  // into kChains quarters summed as independent chains (interleaved, so
+  // they overlap), then each quarter is offset by the totals before it (a
+  // loop that vectorises). Modular integer sums: the same values in any order.
+  static constexpr std::size_t kChains = 4;
+  static constexpr std::size_t kChainLen = kLen / kChains;
+  MPTRACK_FFT_INLINE void running_sum() {
+    std::uint32_t* q = prefix_.data() + 1;  // q[i] = cell i, then its prefix through i
+    std::array<std::uint32_t, kChains> s{};
+    for (std::size_t j = 0; j < kChainLen; ++j) {
+      for (std::size_t c = 0; c < kChains; ++c) {
+        s[c] += q[c * kChainLen + j];
+        q[c * kChainLen + j] = s[c];
+      }
+    }
+    for (std::size_t i = kChains * kChainLen; i < kLen; ++i) {  // tail, after the last quarter
+      s[kChains - 1] += q[i];
+      q[i] = s[kChains - 1];
+    }
+    std::uint32_t offset = 0;
+    for (std::size_t c = 1; c < kChains; ++c) {
+      offset += s[c - 1];
+      const std::size_t end = c + 1 < kChains ? (c + 1) * kChainLen : kLen;
+      for (std::size_t i = c * kChainLen; i < end; ++i) q[i] += offset;
+    }
+  }
+
+  MPTRACK_FFT_INLINE std::size_t keep_all(std::size_t lo, std::size_t hi) {
     for (std::size_t i = lo; i < hi; ++i) cells_[count_++] = static_cast<std::uint16_t>(i);
     return count_;
   }
 
   // Kept cells in ascending order. Flags are read eight at a time: on noise
   // nearly every word is zero, so the per-cell branch runs only near targets.
-  void collect(std::size_t lo, std::size_t hi) {
+  MPTRACK_FFT_INLINE void collect(std::size_t lo, std::size_t hi) {
     std::size_t i = lo;
     for (; i + 8 <= hi; i += 8) {
       std::uint64_t word = 0;
@@ -166,7 +235,8 @@ class CfarScreen {
   // Interior cells (both runs inside the line, unwrapped), the bulk of the
   // line: two runs at fixed offsets, straight-line arithmetic that vectorises.
   template <bool kSo>
-  void interior_flags(const float* line, std::size_t first, std::size_t last, float k, const CfarParams& p) {
+  MPTRACK_FFT_INLINE void interior_flags(const float* line, std::size_t first, std::size_t last,
+                                         float k, const CfarParams& p) {
     const std::size_t g = p.guard_cells;
     const std::size_t reach = g + p.training_cells;
     const std::uint32_t* q = prefix_.data();
@@ -187,16 +257,19 @@ class CfarScreen {
   /// and two where nothing wraps (kShift).
   static constexpr std::size_t kSegments = 3;
   static constexpr std::size_t kShiftSegments = 2;
+  /// Row kWhole: the whole window (both runs; under kWrap one of them may
+  /// wrap, so at most three segments too), what CA's and GO's bound sums.
+  static constexpr std::size_t kWhole = 2;
   struct EdgeRuns {
-    std::array<std::array<std::uint16_t, kSegments>, 2> begin{};
-    std::array<std::array<std::uint16_t, kSegments>, 2> end{};
+    std::array<std::array<std::uint16_t, kSegments>, 3> begin{};
+    std::array<std::array<std::uint16_t, kSegments>, 3> end{};
   };
 
   // A cell within G + T of an end: its two runs as Cfar::gather_training()
   // takes them (kShift: the deficit moves to the other side; kWrap:
   // circular), as prefix-sum segments, computed once per (G, T, edge) and
   // reused for every line until the parameters change.
-  void plan_edges(const CfarParams& p) {
+  MPTRACK_FFT_INLINE void plan_edges(const CfarParams& p) {
     if (planned_ && p.guard_cells == plan_guard_ && p.training_cells == plan_training_ && p.edge == plan_edge_) {
       return;
     }
@@ -212,7 +285,9 @@ class CfarScreen {
   }
 
   /// Table slot of an edge cell: i < G + T <= kEdgeHalf, or kLen - 1 - i < G + T.
-  static std::size_t edge_slot(std::size_t i) { return i < kEdgeHalf ? i : kEdgeHalf + (kLen - 1 - i); }
+  MPTRACK_FFT_INLINE static std::size_t edge_slot(std::size_t i) {
+    return i < kEdgeHalf ? i : kEdgeHalf + (kLen - 1 - i);
+  }
 
   static EdgeRuns edge_runs(std::size_t i, const CfarParams& p) {
     const std::size_t g = p.guard_cells;
@@ -244,26 +319,28 @@ class CfarScreen {
     const std::size_t na_left = na < t ? na : t;
     const std::size_t nc_left = t - na_left;
     EdgeRuns e;
-    std::array<std::size_t, 2> used{};
+    std::array<std::size_t, 3> used{};
     add_run(e, 0, used, a, na_left);
     add_run(e, 0, used, c, nc_left);
     add_run(e, 1, used, (a + na_left) % kLen, na - na_left);
     add_run(e, 1, used, (c + nc_left) % kLen, nc - nc_left);
+    add_run(e, kWhole, used, a, na);  // CA, GO: the two runs, half as many loads
+    add_run(e, kWhole, used, c, nc);
     return e;
   }
 
   /// Appends the cells [from, from + n) mod kLen to half h: one segment, or
   /// two where the run wraps past the end of the line.
-  static void add_run(EdgeRuns& e, std::size_t h, std::array<std::size_t, 2>& used, std::size_t from,
-                      std::size_t n) {
+  static void add_run(EdgeRuns& e, std::size_t h, std::array<std::size_t, 3>& used,
+                      std::size_t from, std::size_t n) {
     if (n == 0) return;
     const std::size_t to = from + n <= kLen ? from + n : kLen;
     add_segment(e, h, used, from, to);
     if (from + n > kLen) add_segment(e, h, used, 0, from + n - kLen);
   }
 
-  static void add_segment(EdgeRuns& e, std::size_t h, std::array<std::size_t, 2>& used, std::size_t b,
-                          std::size_t en) {
+  static void add_segment(EdgeRuns& e, std::size_t h, std::array<std::size_t, 3>& used,
+                          std::size_t b, std::size_t en) {
     // Never more than kSegments; were one dropped, W would only be lower
     // (every segment sums cells >= 0): more cells kept, never fewer.
     if (used[h] == kSegments) return;
@@ -273,7 +350,8 @@ class CfarScreen {
   }
 
   /// Flags of edge cells [from, to), with the loop shape fixed per policy.
-  void edges(const float* line, std::size_t from, std::size_t to, float k, bool wrap, bool so) {
+  MPTRACK_FFT_INLINE void edges(const float* line, std::size_t from, std::size_t to, float k,
+                                bool wrap, bool so) {
     if (wrap && so) {
       edge_flags<kSegments, true>(line, from, to, k);
     } else if (wrap) {
@@ -287,20 +365,24 @@ class CfarScreen {
 
   /// The interior's test on the planned runs: kSegs segments per half.
   template <std::size_t kSegs, bool kSo>
-  void edge_flags(const float* line, std::size_t from, std::size_t to, float k) {
+  MPTRACK_FFT_INLINE void edge_flags(const float* line, std::size_t from, std::size_t to, float k) {
     const std::uint32_t* q = prefix_.data();
     for (std::size_t i = from; i < to; ++i) {
       const EdgeRuns& e = edges_[edge_slot(i)];
-      std::uint32_t wl = 0;
-      std::uint32_t wr = 0;
-      for (std::size_t s = 0; s < kSegs; ++s) {
-        wl += q[e.end[0][s]] - q[e.begin[0][s]];
-        wr += q[e.end[1][s]] - q[e.begin[1][s]];
-      }
       // Modular sums of exact integer sums (each < 2^31): CA's whole-window
       // sum is the same number however its cells are grouped.
-      std::uint32_t w = wl + wr;
-      if constexpr (kSo) w = wl < wr ? wl : wr;
+      std::uint32_t w = 0;
+      if constexpr (kSo) {
+        std::uint32_t wl = 0;
+        std::uint32_t wr = 0;
+        for (std::size_t s = 0; s < kSegs; ++s) {
+          wl += q[e.end[0][s]] - q[e.begin[0][s]];
+          wr += q[e.end[1][s]] - q[e.begin[1][s]];
+        }
+        w = wl < wr ? wl : wr;
+      } else {
+        for (std::size_t s = 0; s < kSegs; ++s) w += q[e.end[kWhole][s]] - q[e.begin[kWhole][s]];
+      }
       flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
     }
   }
