@@ -207,27 +207,56 @@ TEST_CASE("CfarScreen: the AVX2 and AVX-512 copies keep the cells of the baselin
   }
 }
 
-TEST_CASE("CfarScreen keeps every detection on a line whose length is not a multiple of 4") {
-  // The running sum's last quarter absorbs the tail (cfar_screen.h running_sum).
-  fe::CfarScreen<131> screen131;
-  const fe::Cfar cfar = make(fe::CfarType::kSmallestOf, fe::CfarEdge::kWrap, 2, 8, 1e-2);
+namespace {
+
+// Detections of Cfar::test() on 20 noise lines of length Len with one strong
+// last cell; counts in *missed those the screen drops and in *kept_total the
+// cells it keeps. Returns how many detections there were.
+template <std::size_t Len>
+std::size_t short_line_detections(std::size_t guard, std::size_t train, int* missed,
+                                  std::size_t* kept_total) {
+  fe::CfarScreen<Len> screen;
+  const fe::Cfar cfar = make(fe::CfarType::kCellAveraging, fe::CfarEdge::kShift, guard, train, 1e-2);
   std::mt19937_64 rng(3);
   std::exponential_distribution<float> expo(1.0f);
-  std::vector<float> line(131);
+  std::vector<float> line(Len);
   std::size_t detected = 0;
   for (int rep = 0; rep < 20; ++rep) {
     for (float& x : line) x = expo(rng);
-    line[130] = 200.0f;  // in the tail
-    const std::size_t kept = screen131.run(cfar, line.data(), 0, 131);
-    std::vector<bool> is_kept(131, false);
-    for (std::size_t j = 0; j < kept; ++j) is_kept[screen131.cells()[j]] = true;
-    for (std::size_t i = 0; i < 131; ++i) {
-      if (!cfar.test(line.data(), 131, i).detected) continue;
+    line[Len - 1] = 200.0f;
+    const std::size_t kept = screen.run(cfar, line.data(), 0, Len);
+    *kept_total += kept;
+    std::vector<bool> is_kept(Len, false);
+    for (std::size_t j = 0; j < kept; ++j) is_kept[screen.cells()[j]] = true;
+    for (std::size_t i = 0; i < Len; ++i) {
+      if (!cfar.test(line.data(), Len, i).detected) continue;
       ++detected;
-      CHECK(is_kept[i]);
+      if (!is_kept[i]) ++*missed;
     }
   }
-  CHECK(detected >= 20);  // the tail cell alone, once per line
+  return detected;
+}
+
+}  // namespace
+
+TEST_CASE("CfarScreen keeps every detection where the two edge regions are apart and where they meet") {
+  // Edge cells read running sums over [0, E) and [N - E, N), E = 2(G + T) + 1,
+  // the upper one from its own start; where N <= 2E one sum over the line.
+  // 131 = 2 x 43 + 45 (apart; T = 13 also not a power of two, so the
+  // interior's box sums add three runs), 41 <= 2 x 21 (they meet).
+  // Tight as well: a sum that fell short would keep more cells than CFAR detects.
+  int missed = 0;
+  std::size_t kept = 0;
+  const std::size_t apart = short_line_detections<131>(3, 13, &missed, &kept);
+  CHECK(apart >= 20);  // the last cell, once per line
+  CHECK(missed == 0);
+  CHECK(kept <= apart + 3);
+  missed = 0;
+  kept = 0;
+  const std::size_t meet = short_line_detections<41>(2, 8, &missed, &kept);
+  CHECK(meet >= 20);
+  CHECK(missed == 0);
+  CHECK(kept <= meet + 3);
 }
 
 TEST_CASE("CfarScreen keeps no cell of an all-zero line") {

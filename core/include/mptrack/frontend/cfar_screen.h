@@ -9,12 +9,15 @@
 //
 // CA, GO, SO: each cell is quantised once, q = trunc(x 2^s), with 2^s chosen
 // from the line's maximum so that a quantised cell is below 2^24 and 2T <= 128
-// of them sum below 2^31; the training sums W are differences of a running
-// (modular, uint32) sum, so each costs four loads whatever T (an edge cell,
-// within G + T of an end: up to six for CA and GO, twelve for SO, from
-// segment tables planned once per parameter set, docs/algorithms/frontend.md
-// §Peaks, "Threshold first"). On x86-64 hosts it runs compiled for AVX2 or
-// AVX-512 where the CPU has them (run_copy; the same cells). Truncation
+// of them sum below 2^31. An interior cell's two half sums are box sums of
+// T cells, built for the whole line by doubling (log2 T vector passes, two
+// loads a cell each, at most 6), two loads per cell; an edge cell, within
+// G + T of an end, takes its runs as differences of a running (modular,
+// uint32) sum over the two edge regions: up to six loads for CA and GO,
+// twelve for SO, from segment tables planned once per parameter set
+// (docs/algorithms/frontend.md §Peaks, "Threshold first"). Exact integers
+// either way. On x86-64 hosts it runs compiled for AVX2 or AVX-512 where
+// the CPU has them (run_copy; the same cells). Truncation
 // only lowers a cell, so W 2^-s <= the exact training sum S. Cfar::test()
 // computes z = fl(fl(sum in index order) / n) and detects P > fl(alpha z);
 // over n <= 128 non-negative terms the float sum is >= S (1 - 127 u), so
@@ -139,19 +142,20 @@ class CfarScreen {
     if (!(kd >= static_cast<double>(kFloatMin) && kd <= static_cast<double>(kFloatMax))) return keep_all(lo, hi);
     const float k = static_cast<float>(kd);
     const float scale = static_cast<float>(pow2(kQuantBits - e));  // exact power of two, normal
-    // Quantise (vectorises), then the running sum.
+    // Quantise (vectorises); the edge cells' prefix sums; the interior's box sums.
     for (std::size_t i = 0; i < kLen; ++i) {
-      prefix_[i + 1] = static_cast<std::uint32_t>(static_cast<std::int32_t>(line[i] * scale));
+      level_a_[i] = static_cast<std::uint32_t>(static_cast<std::int32_t>(line[i] * scale));
     }
-    prefix_[0] = 0;
-    running_sum();
     const std::size_t reach = p.guard_cells + p.training_cells;
+    if (p.edge != CfarEdge::kSkip) edge_prefix(level_a_.data(), reach);
+    if (p.training_cells > kRunPad) return keep_all(lo, hi);  // not a valid Cfar (T <= 64)
+    const std::uint32_t* box = box_sums(p.training_cells);
     const std::size_t first = lo > reach ? lo : reach;  // interior cells: [first, last)
     const std::size_t last = hi < kLen - reach ? hi : kLen - reach;
     if (so) {
-      interior_flags<true>(line, first, last, k, p);
+      interior_flags<true>(line, box, first, last, k, p);
     } else {
-      interior_flags<false>(line, first, last, k, p);
+      interior_flags<false>(line, box, first, last, k, p);
     }
     const std::size_t edge_lo_end = first < hi ? first : hi;  // [lo, edge_lo_end): lower edge
     const std::size_t edge_hi_begin = last > edge_lo_end ? last : edge_lo_end;
@@ -182,32 +186,74 @@ class CfarScreen {
     return x;
   }
 
-  // prefix_[i] = q_0 + ... + q_{i-1} (mod 2^32). One chain of kLen dependent
-  // adds is latency-bound (perf: a fifth of detect()), so the line is cut
-  // into kChains quarters summed as independent chains (interleaved, so
-  // they overlap), then each quarter is offset by the totals before it (a
-  // loop that vectorises). Modular integer sums: the same values in any order.
-  static constexpr std::size_t kChains = 4;
-  static constexpr std::size_t kChainLen = kLen / kChains;
-  MPTRACK_FFT_INLINE void running_sum() {
-    std::uint32_t* q = prefix_.data() + 1;  // q[i] = cell i, then its prefix through i
-    std::array<std::uint32_t, kChains> s{};
-    for (std::size_t j = 0; j < kChainLen; ++j) {
-      for (std::size_t c = 0; c < kChains; ++c) {
-        s[c] += q[c * kChainLen + j];
-        q[c * kChainLen + j] = s[c];
+  // prefix_ over the cells the edge segments read, q: the quantised line.
+  // Those are [0, E) and [kLen - E, kLen), E = 2(G + T) + 1 (the windows of
+  // the cells within G + T of an end, wrapped or shifted): two chains of E
+  // adds, interleaved, instead of one of kLen. The upper region's sums start
+  // from 0 at its own first cell: every planned segment lies in one region
+  // (plan_edges), so its difference is the same integer. Where the regions
+  // meet (kLen <= 2E), one running sum over the whole line.
+  MPTRACK_FFT_INLINE void edge_prefix(const std::uint32_t* q, std::size_t reach) {
+    const std::size_t e = 2 * reach + 1;
+    prefix_[0] = 0;
+    if (kLen <= 2 * e) {
+      for (std::size_t i = 0; i < kLen; ++i) prefix_[i + 1] = prefix_[i] + q[i];
+      return;
+    }
+    const std::size_t base = kLen - e;
+    prefix_[base] = 0;
+    std::uint32_t low = 0;
+    std::uint32_t high = 0;
+    for (std::size_t j = 0; j < e; ++j) {
+      low += q[j];
+      prefix_[j + 1] = low;
+      high += q[base + j];
+      prefix_[base + j + 1] = high;
+    }
+  }
+
+  // Sums of T consecutive quantised cells, B[j] = q_j + ... + q_{j+T-1} for
+  // j <= kLen - T (q in level_a_): T in binary, the runs of widths 1, 2, 4,
+  // ... built by doubling (each pass w -> 2w adds two loads a cell and
+  // vectorises) and each set bit's run added into box_. log2 T passes, at
+  // most 6 (T <= 64), against a running sum's one dependent add a cell; the
+  // same integers (exact: below 2^30). Returns the array holding B.
+  MPTRACK_FFT_INLINE const std::uint32_t* box_sums(std::size_t t) {
+    std::uint32_t* cur = level_a_.data();
+    std::uint32_t* next = level_b_.data();
+    std::size_t w = 1;     // width of cur's sums
+    std::size_t have = 0;  // width of box_'s sums so far
+    for (;;) {
+      if ((t & w) != 0) {
+        if (have == 0 && t == w) return cur;  // T a power of two: the level itself
+        add_run_sums(cur, have);
+        have += w;
+        if (have == t) return box_.data();
       }
+      double_width(cur, next, w);
+      std::uint32_t* tmp = cur;
+      cur = next;
+      next = tmp;
+      w *= 2;
     }
-    for (std::size_t i = kChains * kChainLen; i < kLen; ++i) {  // tail, after the last quarter
-      s[kChains - 1] += q[i];
-      q[i] = s[kChains - 1];
+  }
+
+  // box_[j] = (have ? box_[j] : 0) + run[j + have], j < kLen. Entries past
+  // the valid ones (j > kLen - width) hold sums with the zero padding and
+  // are never read: a trip count fixed at compile time leaves no scalar tail.
+  MPTRACK_FFT_INLINE void add_run_sums(const std::uint32_t* __restrict run, std::size_t have) {
+    std::uint32_t* __restrict b = box_.data();
+    if (have == 0) {
+      for (std::size_t j = 0; j < kLen; ++j) b[j] = run[j];
+    } else {
+      for (std::size_t j = 0; j < kLen; ++j) b[j] += run[j + have];
     }
-    std::uint32_t offset = 0;
-    for (std::size_t c = 1; c < kChains; ++c) {
-      offset += s[c - 1];
-      const std::size_t end = c + 1 < kChains ? (c + 1) * kChainLen : kLen;
-      for (std::size_t i = c * kChainLen; i < end; ++i) q[i] += offset;
-    }
+  }
+
+  // out[j] = in[j] + in[j + w], j < kLen: runs of width 2w from runs of width w.
+  MPTRACK_FFT_INLINE static void double_width(const std::uint32_t* __restrict in,
+                                              std::uint32_t* __restrict out, std::size_t w) {
+    for (std::size_t j = 0; j < kLen; ++j) out[j] = in[j] + in[j + w];
   }
 
   MPTRACK_FFT_INLINE std::size_t keep_all(std::size_t lo, std::size_t hi) {
@@ -235,14 +281,14 @@ class CfarScreen {
   // Interior cells (both runs inside the line, unwrapped), the bulk of the
   // line: two runs at fixed offsets, straight-line arithmetic that vectorises.
   template <bool kSo>
-  MPTRACK_FFT_INLINE void interior_flags(const float* line, std::size_t first, std::size_t last,
-                                         float k, const CfarParams& p) {
+  MPTRACK_FFT_INLINE void interior_flags(const float* line, const std::uint32_t* box,
+                                         std::size_t first, std::size_t last, float k,
+                                         const CfarParams& p) {
     const std::size_t g = p.guard_cells;
     const std::size_t reach = g + p.training_cells;
-    const std::uint32_t* q = prefix_.data();
     for (std::size_t i = first; i < last; ++i) {
-      const std::uint32_t wl = q[i - g] - q[i - reach];
-      const std::uint32_t wr = q[i + reach + 1] - q[i + g + 1];
+      const std::uint32_t wl = box[i - reach];  // cells [i - G - T, i - G)
+      const std::uint32_t wr = box[i + g + 1];  // cells (i + G, i + G + T]
       std::uint32_t w = wl + wr;
       if constexpr (kSo) w = wl < wr ? wl : wr;
       flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
@@ -278,6 +324,20 @@ class CfarScreen {
       edges_[edge_slot(i)] = edge_runs(i, p);
       edges_[edge_slot(kLen - 1 - i)] = edge_runs(kLen - 1 - i, p);
     }
+    // The whole windows again, one array per segment in cell order (lower
+    // end: slot i; upper end: slot kEdgeHalf + i - (kLen - reach)), so the
+    // CA/GO loop reads them as runs (gathers where the ISA has them).
+    for (std::size_t i = 0; i < reach; ++i) {
+      const EdgeRuns& lower = edges_[edge_slot(i)];
+      const EdgeRuns& upper = edges_[edge_slot(kLen - reach + i)];
+      for (std::size_t m = 0; m < kSegments; ++m) {
+        whole_begin_[m][i] = lower.begin[kWhole][m];
+        whole_end_[m][i] = lower.end[kWhole][m];
+        whole_begin_[m][kEdgeHalf + i] = upper.begin[kWhole][m];
+        whole_end_[m][kEdgeHalf + i] = upper.end[kWhole][m];
+      }
+    }
+    upper_offset_ = kLen - reach - kEdgeHalf;
     plan_guard_ = p.guard_cells;
     plan_training_ = p.training_cells;
     plan_edge_ = p.edge;
@@ -366,31 +426,53 @@ class CfarScreen {
   /// The interior's test on the planned runs: kSegs segments per half.
   template <std::size_t kSegs, bool kSo>
   MPTRACK_FFT_INLINE void edge_flags(const float* line, std::size_t from, std::size_t to, float k) {
+    if constexpr (!kSo) {
+      if (from < to) whole_flags<kSegs>(line, from, to, from < kEdgeHalf ? 0 : upper_offset_, k);
+      return;
+    }
     const std::uint32_t* q = prefix_.data();
     for (std::size_t i = from; i < to; ++i) {
       const EdgeRuns& e = edges_[edge_slot(i)];
-      // Modular sums of exact integer sums (each < 2^31): CA's whole-window
-      // sum is the same number however its cells are grouped.
-      std::uint32_t w = 0;
-      if constexpr (kSo) {
-        std::uint32_t wl = 0;
-        std::uint32_t wr = 0;
-        for (std::size_t s = 0; s < kSegs; ++s) {
-          wl += q[e.end[0][s]] - q[e.begin[0][s]];
-          wr += q[e.end[1][s]] - q[e.begin[1][s]];
-        }
-        w = wl < wr ? wl : wr;
-      } else {
-        for (std::size_t s = 0; s < kSegs; ++s) w += q[e.end[kWhole][s]] - q[e.begin[kWhole][s]];
+      std::uint32_t wl = 0;
+      std::uint32_t wr = 0;
+      for (std::size_t s = 0; s < kSegs; ++s) {
+        wl += q[e.end[0][s]] - q[e.begin[0][s]];
+        wr += q[e.end[1][s]] - q[e.begin[1][s]];
       }
+      const std::uint32_t w = wl < wr ? wl : wr;
       flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
     }
   }
 
-  std::array<std::uint32_t, kLen + 1> prefix_{};  ///< running sums of the quantised cells (mod 2^32)
+  /// CA, GO edge cells [from, to) of one end (table slot i - offset): the
+  /// whole window's segments. Modular sums of exact integer sums (each
+  /// < 2^31): the same number however the window's cells are grouped.
+  template <std::size_t kSegs>
+  MPTRACK_FFT_INLINE void whole_flags(const float* line, std::size_t from, std::size_t to,
+                                      std::size_t offset, float k) {
+    const std::uint32_t* q = prefix_.data();
+    for (std::size_t i = from; i < to; ++i) {
+      const std::size_t slot = i - offset;
+      std::uint32_t w = 0;
+      for (std::size_t m = 0; m < kSegs; ++m) w += q[whole_end_[m][slot]] - q[whole_begin_[m][slot]];
+      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+    }
+  }
+
+  /// Zeros after the kLen cells of a level: the doubling and box passes read
+  /// up to T - 1 <= 63 entries past j (Cfar: T <= 64).
+  static constexpr std::size_t kRunPad = 64;
+  alignas(64) std::array<std::uint32_t, kLen + kRunPad> level_a_{};  ///< quantised cells, then runs
+  alignas(64) std::array<std::uint32_t, kLen + kRunPad> level_b_{};  ///< the doubling's other buffer
+  alignas(64) std::array<std::uint32_t, kLen> box_{};  ///< sums of T cells (T not a power of two)
+  std::array<std::uint32_t, kLen + 1> prefix_{};  ///< running sums over the edge regions (mod 2^32)
   std::array<std::uint8_t, kLen> flags_{};        ///< 1: cell kept
   std::array<std::uint16_t, kLen> cells_{};       ///< kept cells, ascending
   std::array<EdgeRuns, 2 * kEdgeHalf> edges_{};   ///< training runs of the edge cells (plan_edges)
+  /// Whole-window segments [m][slot] of the edge cells in cell order (plan_edges).
+  std::array<std::array<std::int32_t, 2 * kEdgeHalf>, kSegments> whole_begin_{};
+  std::array<std::array<std::int32_t, 2 * kEdgeHalf>, kSegments> whole_end_{};
+  std::size_t upper_offset_ = 0;  ///< slot = cell - upper_offset_ at the upper end
   std::size_t plan_guard_ = 0;                    ///< parameters edges_ was planned for
   std::size_t plan_training_ = 0;
   CfarEdge plan_edge_ = CfarEdge::kShift;
