@@ -6,8 +6,11 @@
 #include <memory>
 
 #include "alloc_guard.h"
+#include "fft_test_values.h"
 #include "frontend_test_signals.h"
+#include "mptrack/dsp/fft.h"
 #include "mptrack/frontend/doppler_processor.h"
+#include "mptrack/frontend/window.h"
 
 namespace fe = mptrack::frontend;
 using Caps = fe::SmallDopplerRadarCaps;
@@ -77,6 +80,71 @@ TEST_CASE("doppler: a Hann window keeps the peak bin and scales it by sum w") {
   CHECK(static_cast<double>(s->dop.coherent_gain()) == doctest::Approx(7.5).epsilon(1e-6));
   CHECK(mag(s->dop, 4, 14, 0) == doctest::Approx(32.0 * 7.5).epsilon(1e-5));
   CHECK(mag(s->dop, 4, 13, 0) < mag(s->dop, 4, 14, 0));
+}
+
+namespace {
+
+// 3 x 2 = 6 virtual channels: the batch pads them to 8 lanes (doppler_processor.h).
+struct SixChannelCaps {
+  static constexpr std::size_t kNumTx = 3;
+  static constexpr std::size_t kNumRx = 2;
+  static constexpr std::size_t kNumSamples = 64;
+  static constexpr std::size_t kRangeFftSize = 64;
+  static constexpr std::size_t kNumRangeBins = 32;
+  static constexpr std::size_t kNumChirps = 16;
+  static constexpr std::size_t kNumAngleBins = 16;
+  static constexpr std::size_t kMaxDetections = 16;
+};
+
+struct SixChannelStages {
+  fe::RangeMatchedFilter<SixChannelCaps> rmf;
+  fe::DopplerProcessor<SixChannelCaps> dop;
+  fe::RadarCube<SixChannelCaps> cube;
+};
+
+}  // namespace
+
+TEST_CASE("doppler: every snapshot value has the bits of Fft<N_c> on the windowed chirps") {
+  // The batch (lane = channel, padded lanes) must give, for every (range bin,
+  // channel), the bits of one Fft<N_c>::forward() of w[c] r_c, fftshift-ed.
+  fe::FrontEndParams p = mptrack::test::small_doppler_params();
+  p.doppler_window = fe::WindowType::kHann;
+  auto s = std::make_unique<SixChannelStages>();
+  REQUIRE(s->rmf.init(p) == Status::kOk);
+  REQUIRE(s->dop.init(p) == Status::kOk);
+  mptrack::test::SynthTarget t[2];
+  t[0].range_m = 7.0 * fe::range_bin_m(p);
+  t[0].radial_mps = 11.0;
+  t[1].range_m = 20.3 * fe::range_bin_m(p);
+  t[1].radial_mps = -4.0;
+  t[1].amplitude = 0.3;
+  mptrack::test::synthesize<SixChannelCaps>(p, t, 2, 1e-3, 7, s->cube);
+  REQUIRE(s->rmf.process(s->cube) == Status::kOk);
+  REQUIRE(s->dop.process(s->rmf) == Status::kOk);
+  constexpr std::size_t kNc = SixChannelCaps::kNumChirps;
+  mptrack::dsp::Fft<kNc> fft;
+  REQUIRE(fft.init() == Status::kOk);
+  float w[kNc];
+  fe::fill_window(p.doppler_window, w, kNc);
+  std::size_t differing = 0;
+  for (std::size_t g = 0; g < SixChannelCaps::kNumRangeBins; ++g) {
+    for (std::size_t v = 0; v < 6; ++v) {
+      float re[kNc];
+      float im[kNc];
+      for (std::size_t c = 0; c < kNc; ++c) {
+        re[c] = s->rmf.value_re(c, v, g) * w[c];
+        im[c] = s->rmf.value_im(c, v, g) * w[c];
+      }
+      fft.forward(re, im);
+      for (std::size_t k = 0; k < kNc; ++k) {
+        const std::size_t d = (k + kNc / 2) % kNc;
+        const bool same = mptrack::test::same_bits_or_nan(s->dop.snapshot_re(g, d)[v], re[k]) &&
+                          mptrack::test::same_bits_or_nan(s->dop.snapshot_im(g, d)[v], im[k]);
+        if (!same) ++differing;
+      }
+    }
+  }
+  CHECK(differing == 0);
 }
 
 TEST_CASE("doppler: with one chirp the stage is a transpose (seed 004, no Doppler axis)") {

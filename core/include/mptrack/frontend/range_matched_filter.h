@@ -26,7 +26,6 @@
 
 #include "mptrack/dsp/fft.h"
 #include "mptrack/frontend/frontend_params.h"
-#include "mptrack/frontend/prefetch.h"
 #include "mptrack/frontend/radar_cube.h"
 #include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
@@ -99,19 +98,13 @@ class RangeMatchedFilter {
   template <class Sample>
   Status process(const RadarCubeT<Caps, Sample>& cube) {
     if (!initialized_) return Status::kNotInitialized;
-    // Channel outer, chirp inner: the chirp-contiguous output rows of one
-    // channel (kNumRangeBins x 64-byte lines per plane) stay in L1 while 16
-    // consecutive chirps fill them; each profile's operations are unchanged.
-    for (std::size_t v = 0; v < kNumVirtual; ++v) {
-      const std::size_t m = v / Caps::kNumRx;
-      const std::size_t j = v % Caps::kNumRx;
-      for (std::size_t c = 0; c < Caps::kNumChirps; ++c) {
-        const Sample* src = cube.iq.data() + RadarCubeT<Caps, Sample>::offset(c, m, j, 0);
-        MPTRACK_TRY(load(src));
-        if (c + 1 < Caps::kNumChirps) {  // next chirp's profile: 24 KB ahead at 12 channels
-          prefetch_read(src + RadarCubeT<Caps, Sample>::offset(1, 0, 0, 0),
-                        2 * Caps::kNumSamples * sizeof(Sample));
-        }
+    // Chirp outer, channel inner: the chirp's profiles are adjacent in the
+    // cube (read as one stream), and its kNumRangeBins output runs of
+    // kNumVirtual values complete while they are in L1.
+    for (std::size_t c = 0; c < Caps::kNumChirps; ++c) {
+      for (std::size_t v = 0; v < kNumVirtual; ++v) {
+        MPTRACK_TRY(load(cube.iq.data() + RadarCubeT<Caps, Sample>::offset(c, 0, 0, 0) +
+                         2 * v * Caps::kNumSamples));
         compress(c, v);
       }
     }
@@ -150,22 +143,22 @@ class RangeMatchedFilter {
   /// Range profile of (chirp c, virtual channel v) at range bin g.
   float value_re(std::size_t c, std::size_t v, std::size_t g) const { return out_re_[index(c, v, g)]; }
   float value_im(std::size_t c, std::size_t v, std::size_t g) const { return out_im_[index(c, v, g)]; }
-  /// The kNumChirps values of channel v at range bin g, chirp-contiguous
-  /// (what the Doppler stage transforms), planar.
-  const float* chirps_re(std::size_t v, std::size_t g) const { return &out_re_[index(0, v, g)]; }
-  const float* chirps_im(std::size_t v, std::size_t g) const { return &out_im_[index(0, v, g)]; }
-  /// Floats between the chirp runs of adjacent (v, g): kNumChirps plus one
-  /// 64-byte line when there is a Doppler axis. Without the pad the
-  /// compress() stores of one profile (stride kNumChirps floats = 512 B at
-  /// 128 chirps) fall into 1/8 of the L1 sets and evict each other before
-  /// the next chirps complete their lines (one frontend/large run without
-  /// the pad: range stage 1.32 ms against 1.06 ms for the old chirp-major
-  /// layout; with it 0.95-1.0 ms).
-  static constexpr std::size_t kChirpStride = Caps::kNumChirps > 1 ? Caps::kNumChirps + 16 : 1;
-  /// Output layout [v][g][c] (row stride kChirpStride): slow time
-  /// contiguous, so the Doppler stage reads each of its transforms as one run.
+  /// The kNumChirps x kNumVirtual values of range bin g, planar: (c, v) at
+  /// c * kNumVirtual + v (what the Doppler stage transforms, a batch per bin).
+  const float* bin_re(std::size_t g) const { return &out_re_[index(0, 0, g)]; }
+  const float* bin_im(std::size_t g) const { return &out_im_[index(0, 0, g)]; }
+  /// Floats between adjacent range bins: kNumChirps x kNumVirtual plus one
+  /// 64-byte line when there is a Doppler axis. Without the pad the stores
+  /// of one profile (stride 6 KiB at 128 chirps x 12 channels) would map to
+  /// two groups of L1 sets only and evict each other before the chirp's
+  /// other channels complete their lines (the pad of the earlier [v][g][c]
+  /// layout was measured: 1.32 against 0.95-1.0 ms).
+  static constexpr std::size_t kBinStride =
+      Caps::kNumChirps * kNumVirtual + (Caps::kNumChirps > 1 ? 16 : 0);
+  /// Output layout [g][c][v]: the channels of one (bin, chirp) contiguous,
+  /// one input row of the Doppler stage's batch.
   static constexpr std::size_t index(std::size_t c, std::size_t v, std::size_t g) {
-    return (v * kNumRangeBins + g) * kChirpStride + c;
+    return g * kBinStride + c * kNumVirtual + v;
   }
 
   std::size_t chirp_len() const { return chirp_len_; }
@@ -250,8 +243,8 @@ class RangeMatchedFilter {
     const float cr = cal_re_[v];
     const float ci = cal_im_[v];
     for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-      dst_re[g * kChirpStride] = buf_re_[g] * cr - buf_im_[g] * ci;
-      dst_im[g * kChirpStride] = buf_im_[g] * cr + buf_re_[g] * ci;
+      dst_re[g * kBinStride] = buf_re_[g] * cr - buf_im_[g] * ci;
+      dst_im[g * kBinStride] = buf_im_[g] * cr + buf_re_[g] * ci;
     }
   }
 
@@ -260,8 +253,8 @@ class RangeMatchedFilter {
   std::array<float, kM> ref_im_{};
   alignas(16) std::array<float, kM> buf_re_{};
   alignas(16) std::array<float, kM> buf_im_{};
-  std::array<float, kNumVirtual * kNumRangeBins * kChirpStride> out_re_{};
-  std::array<float, kNumVirtual * kNumRangeBins * kChirpStride> out_im_{};
+  std::array<float, kNumRangeBins * kBinStride> out_re_{};
+  std::array<float, kNumRangeBins * kBinStride> out_im_{};
   std::array<float, kNumVirtual> cal_re_{};
   std::array<float, kNumVirtual> cal_im_{};
   std::size_t chirp_len_ = 0;
