@@ -306,6 +306,7 @@ class CfarScreen {
   /// Row kWhole: the whole window (both runs; under kWrap one of them may
   /// wrap, so at most three segments too), what CA's and GO's bound sums.
   static constexpr std::size_t kWhole = 2;
+  /// One cell's plan (edge_runs); stored per segment in cell order (runs_begin_).
   struct EdgeRuns {
     std::array<std::array<std::uint16_t, kSegments>, 3> begin{};
     std::array<std::array<std::uint16_t, kSegments>, 3> end{};
@@ -320,33 +321,26 @@ class CfarScreen {
       return;
     }
     const std::size_t reach = p.guard_cells + p.training_cells;
-    for (std::size_t i = 0; i < reach; ++i) {
-      edges_[edge_slot(i)] = edge_runs(i, p);
-      edges_[edge_slot(kLen - 1 - i)] = edge_runs(kLen - 1 - i, p);
-    }
-    // The whole windows again, one array per segment in cell order (lower
-    // end: slot i; upper end: slot kEdgeHalf + i - (kLen - reach)), so the
-    // CA/GO loop reads them as runs (gathers where the ISA has them).
-    for (std::size_t i = 0; i < reach; ++i) {
-      const EdgeRuns& lower = edges_[edge_slot(i)];
-      const EdgeRuns& upper = edges_[edge_slot(kLen - reach + i)];
-      for (std::size_t m = 0; m < kSegments; ++m) {
-        whole_begin_[m][i] = lower.begin[kWhole][m];
-        whole_end_[m][i] = lower.end[kWhole][m];
-        whole_begin_[m][kEdgeHalf + i] = upper.begin[kWhole][m];
-        whole_end_[m][kEdgeHalf + i] = upper.end[kWhole][m];
-      }
-    }
+    // Slots in cell order at each end (lower: i; upper: kEdgeHalf + i - (kLen - reach)),
+    // so each edge loop reads every table as a run.
     upper_offset_ = kLen - reach - kEdgeHalf;
+    for (std::size_t i = 0; i < reach; ++i) {
+      store_runs(i, edge_runs(i, p));
+      store_runs(kEdgeHalf + i, edge_runs(kLen - reach + i, p));
+    }
     plan_guard_ = p.guard_cells;
     plan_training_ = p.training_cells;
     plan_edge_ = p.edge;
     planned_ = true;
   }
 
-  /// Table slot of an edge cell: i < G + T <= kEdgeHalf, or kLen - 1 - i < G + T.
-  MPTRACK_FFT_INLINE static std::size_t edge_slot(std::size_t i) {
-    return i < kEdgeHalf ? i : kEdgeHalf + (kLen - 1 - i);
+  void store_runs(std::size_t slot, const EdgeRuns& e) {
+    for (std::size_t h = 0; h < 3; ++h) {
+      for (std::size_t m = 0; m < kSegments; ++m) {
+        runs_begin_[h][m][slot] = e.begin[h][m];
+        runs_end_[h][m][slot] = e.end[h][m];
+      }
+    }
   }
 
   static EdgeRuns edge_runs(std::size_t i, const CfarParams& p) {
@@ -423,40 +417,37 @@ class CfarScreen {
     }
   }
 
-  /// The interior's test on the planned runs: kSegs segments per half.
+  /// The interior's test on the planned runs, edge cells [from, to) of one
+  /// end (table slot i - offset): SO the smaller half, CA and GO the whole
+  /// window. Modular sums of exact integer sums (each < 2^31): the same
+  /// number however the window's cells are grouped.
   template <std::size_t kSegs, bool kSo>
   MPTRACK_FFT_INLINE void edge_flags(const float* line, std::size_t from, std::size_t to, float k) {
-    if constexpr (!kSo) {
-      if (from < to) whole_flags<kSegs>(line, from, to, from < kEdgeHalf ? 0 : upper_offset_, k);
-      return;
-    }
-    const std::uint32_t* q = prefix_.data();
-    for (std::size_t i = from; i < to; ++i) {
-      const EdgeRuns& e = edges_[edge_slot(i)];
-      std::uint32_t wl = 0;
-      std::uint32_t wr = 0;
-      for (std::size_t s = 0; s < kSegs; ++s) {
-        wl += q[e.end[0][s]] - q[e.begin[0][s]];
-        wr += q[e.end[1][s]] - q[e.begin[1][s]];
-      }
-      const std::uint32_t w = wl < wr ? wl : wr;
-      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
-    }
-  }
-
-  /// CA, GO edge cells [from, to) of one end (table slot i - offset): the
-  /// whole window's segments. Modular sums of exact integer sums (each
-  /// < 2^31): the same number however the window's cells are grouped.
-  template <std::size_t kSegs>
-  MPTRACK_FFT_INLINE void whole_flags(const float* line, std::size_t from, std::size_t to,
-                                      std::size_t offset, float k) {
+    const std::size_t offset = from < kEdgeHalf ? 0 : upper_offset_;
     const std::uint32_t* q = prefix_.data();
     for (std::size_t i = from; i < to; ++i) {
       const std::size_t slot = i - offset;
       std::uint32_t w = 0;
-      for (std::size_t m = 0; m < kSegs; ++m) w += q[whole_end_[m][slot]] - q[whole_begin_[m][slot]];
+      if constexpr (kSo) {
+        const std::uint32_t wl = run_sum<kSegs>(q, 0, slot);
+        const std::uint32_t wr = run_sum<kSegs>(q, 1, slot);
+        w = wl < wr ? wl : wr;
+      } else {
+        w = run_sum<kSegs>(q, kWhole, slot);
+      }
       flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
     }
+  }
+
+  /// Row h's sum for the edge cell in `slot`: kSegs prefix differences.
+  template <std::size_t kSegs>
+  MPTRACK_FFT_INLINE std::uint32_t run_sum(const std::uint32_t* q, std::size_t h,
+                                            std::size_t slot) const {
+    std::uint32_t w = 0;
+    for (std::size_t m = 0; m < kSegs; ++m) {
+      w += q[runs_end_[h][m][slot]] - q[runs_begin_[h][m][slot]];
+    }
+    return w;
   }
 
   /// Zeros after the kLen cells of a level: the doubling and box passes read
@@ -468,12 +459,13 @@ class CfarScreen {
   std::array<std::uint32_t, kLen + 1> prefix_{};  ///< running sums over the edge regions (mod 2^32)
   std::array<std::uint8_t, kLen> flags_{};        ///< 1: cell kept
   std::array<std::uint16_t, kLen> cells_{};       ///< kept cells, ascending
-  std::array<EdgeRuns, 2 * kEdgeHalf> edges_{};   ///< training runs of the edge cells (plan_edges)
-  /// Whole-window segments [m][slot] of the edge cells in cell order (plan_edges).
-  std::array<std::array<std::int32_t, 2 * kEdgeHalf>, kSegments> whole_begin_{};
-  std::array<std::array<std::int32_t, 2 * kEdgeHalf>, kSegments> whole_end_{};
+  /// Planned segments [row][segment][slot] of the edge cells, rows left,
+  /// right, whole (plan_edges), slots in cell order at each end.
+  using RunTable = std::array<std::array<std::array<std::int32_t, 2 * kEdgeHalf>, kSegments>, 3>;
+  RunTable runs_begin_{};
+  RunTable runs_end_{};
   std::size_t upper_offset_ = 0;  ///< slot = cell - upper_offset_ at the upper end
-  std::size_t plan_guard_ = 0;                    ///< parameters edges_ was planned for
+  std::size_t plan_guard_ = 0;    ///< parameters the tables were planned for
   std::size_t plan_training_ = 0;
   CfarEdge plan_edge_ = CfarEdge::kShift;
   bool planned_ = false;
