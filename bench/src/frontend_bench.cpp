@@ -3,12 +3,17 @@
 //   frontend/seed004  the seed 004 cube (3x3 MIMO, 256 samples, 1 chirp),
 //                     frame 10 of the built-in seed004-drones ADC scenario;
 //   frontend/large    LargeRadarCaps: 12 virtual channels x 256 samples x
-//                     128 chirps, three movers in unit-variance noise.
+//                     128 chirps, three movers in unit-variance noise;
+//   frontend/large_int16  the same frame as 12-bit ADC codes in int16 (what a
+//                     board's DMA delivers; code / 32768 = the float frame / 8,
+//                     rounded to the ADC's step).
 // Counters: detections per frame and the per-stage split (thread CPU time).
 #include <benchmark/benchmark.h>
 
 #include <time.h>
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -33,15 +38,15 @@ std::uint32_t thread_cpu_ticks() {
                                     static_cast<std::uint64_t>(ts.tv_nsec));
 }
 
-template <class Caps>
+template <class Caps, class Sample = float>
 struct Rig {
   frontend::FrontEnd<Caps> fe;
-  frontend::RadarCube<Caps> cube;
+  frontend::RadarCubeT<Caps, Sample> cube;
   Scan<float, Caps::kMaxDetections> scan;
 };
 
-template <class Caps>
-void run_frames(benchmark::State& state, Rig<Caps>& rig) {
+template <class Caps, class Sample>
+void run_frames(benchmark::State& state, Rig<Caps, Sample>& rig) {
   frontend::FrontEndStageTimes times;
   times.clock = &thread_cpu_ticks;
   std::array<double, 4> stage_ns{};
@@ -77,10 +82,9 @@ void bm_frontend_seed004(benchmark::State& state) {
   run_frames(state, *rig);
 }
 
-void bm_frontend_large(benchmark::State& state) {
-  using Large = frontend::LargeRadarCaps;
-  auto rig = std::make_unique<Rig<Large>>();
-  // 77 GHz, 60 us chirp repetition, 590 m gate (as frontend_test's large case).
+// 77 GHz, 60 us chirp repetition, 590 m gate (as frontend_test's large
+// case); three movers in unit-variance noise.
+frontend::FrontEndParams large_params(frontend::RadarCube<frontend::LargeRadarCaps>& cube) {
   frontend::FrontEndParams p;
   p.carrier_hz = 77e9;
   p.chirp_repetition_s = 60e-6;
@@ -100,9 +104,36 @@ void bm_frontend_large(benchmark::State& state) {
   t[2].bearing_rad = 0.05;
   t[2].radial_mps = 30.2 * bin;
   t[2].amplitude = 0.04;
-  test::synthesize<Large>(p, t.data(), t.size(), 1.0, 8, rig->cube);
+  test::synthesize<frontend::LargeRadarCaps>(p, t.data(), t.size(), 1.0, 8, cube);
+  return p;
+}
+
+void bm_frontend_large(benchmark::State& state) {
+  using Large = frontend::LargeRadarCaps;
+  auto rig = std::make_unique<Rig<Large>>();
+  const frontend::FrontEndParams p = large_params(rig->cube);
   if (rig->fe.init(p) != Status::kOk) {
     state.SkipWithError("large front-end init failed");
+    return;
+  }
+  run_frames(state, *rig);
+}
+
+void bm_frontend_large_int16(benchmark::State& state) {
+  using Large = frontend::LargeRadarCaps;
+  auto f = std::make_unique<frontend::RadarCube<Large>>();
+  frontend::FrontEndParams p = large_params(*f);
+  p.adc_bits = 12;
+  auto rig = std::make_unique<Rig<Large, std::int16_t>>();
+  // 12-bit codes left-justified in int16 (steps of 16): unit noise at 256
+  // LSB (1/8 of full scale, code / 32768 = f / 8), clipped at the rails.
+  for (std::size_t i = 0; i < f->iq.size(); ++i) {
+    double code = std::nearbyint(static_cast<double>(f->iq[i]) * 256.0) * 16.0;
+    code = code < -32768.0 ? -32768.0 : (code > 32752.0 ? 32752.0 : code);
+    rig->cube.iq[i] = static_cast<std::int16_t>(code);
+  }
+  if (rig->fe.init(p) != Status::kOk) {
+    state.SkipWithError("large int16 front-end init failed");
     return;
   }
   run_frames(state, *rig);
@@ -113,6 +144,8 @@ void bm_frontend_large(benchmark::State& state) {
 void register_frontend_benchmarks() {
   benchmark::RegisterBenchmark("frontend/seed004", bm_frontend_seed004)->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("frontend/large", bm_frontend_large)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("frontend/large_int16", bm_frontend_large_int16)
+      ->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace mptrack::bench

@@ -7,6 +7,8 @@
 #include <memory>
 #include <array>
 #include <algorithm>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 #include "alloc_guard.h"
@@ -218,6 +220,163 @@ TEST_CASE("range MF: NaN input is rejected with kInvalidInput") {
   auto cube = std::make_unique<fe::RadarCube<Caps>>();
   cube->iq[fe::RadarCube<Caps>::offset(0, 2, 1, 17) + 1] = std::nanf("");
   CHECK(rmf->process(*cube) == Status::kInvalidInput);
+}
+
+TEST_CASE("range MF: a NaN profile is skipped, every other profile is compressed and tallied") {
+  fe::FrontEndParams p;
+  auto rmf = std::make_unique<fe::RangeMatchedFilter<Caps>>();
+  REQUIRE(rmf->init(p) == Status::kOk);
+  auto cube = std::make_unique<fe::RadarCube<Caps>>();
+  mptrack::test::SynthTarget t;
+  t.range_m = range_of_delay(p, 12.0);
+  mptrack::test::synthesize<Caps>(p, &t, 1, 1e-3, 4, *cube);
+  REQUIRE(rmf->process(*cube) == Status::kOk);
+  std::vector<float> clean(Caps::kNumRangeBins);
+  for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) clean[g] = rmf->value_re(0, 7, g);
+  // Channel 5 = (Tx 1, Rx 2) holds the NaN; channel 7, read after it, must not be stale.
+  cube->iq[fe::RadarCube<Caps>::offset(0, 1, 2, 40)] = std::nanf("");
+  CHECK(rmf->process(*cube) == Status::kInvalidInput);
+  CHECK(rmf->tally().nonfinite == 1);
+  for (std::size_t g = 0; g < Caps::kNumRangeBins; ++g) CHECK(rmf->value_re(0, 7, g) == clean[g]);
+}
+
+TEST_CASE("range MF: the float tally counts zeros, samples beyond the ceiling and NaN/Inf") {
+  fe::FrontEndParams p;
+  p.max_abs_sample = 10.0;
+  auto rmf = std::make_unique<fe::RangeMatchedFilter<Caps>>();
+  REQUIRE(rmf->init(p) == Status::kOk);
+  auto cube = std::make_unique<fe::RadarCube<Caps>>();
+  cube->iq.fill(0.5f);
+  const std::size_t n = cube->iq.size();
+  cube->iq[3] = 0.0f;
+  cube->iq[n / 2] = -0.0f;  // -0 == 0
+  cube->iq[n - 1] = 0.0f;
+  cube->iq[10] = 11.0f;     // beyond the ceiling
+  cube->iq[11] = -11.5f;    // beyond it, negative
+  cube->iq[12] = 10.0f;     // at it: not beyond
+  cube->iq[13] = -10.0f;
+  cube->iq[700] = std::numeric_limits<float>::infinity();  // beyond, and not finite
+  cube->iq[900] = std::nanf("");                           // not finite, not beyond
+  CHECK(rmf->process(*cube) == Status::kInvalidInput);
+  CHECK(rmf->tally().zero == 3);
+  CHECK(rmf->tally().over_ceiling == 3);
+  CHECK(rmf->tally().nonfinite == 2);
+  CHECK(rmf->tally().full_scale == 0);
+}
+
+TEST_CASE("range MF: the int16 tally counts zeros and codes at either rail of the ADC") {
+  fe::FrontEndParams p;
+  p.adc_bits = 12;  // rails -32768 and 32768 - 16 = 32752
+  auto rmf = std::make_unique<fe::RangeMatchedFilter<Caps>>();
+  REQUIRE(rmf->init(p) == Status::kOk);
+  auto cube = std::make_unique<fe::RadarCubeInt16<Caps>>();
+  cube->iq.fill(100);
+  const std::size_t n = cube->iq.size();
+  cube->iq[0] = 0;
+  cube->iq[n - 1] = 0;
+  cube->iq[5] = -32768;
+  cube->iq[6] = 32752;
+  cube->iq[7] = 32767;
+  cube->iq[8] = 32751;   // one code below the rail
+  cube->iq[9] = -32767;  // one code above the negative rail
+  CHECK(rmf->process(*cube) == Status::kOk);
+  CHECK(rmf->tally().zero == 2);
+  CHECK(rmf->tally().full_scale == 3);
+  CHECK(rmf->tally().over_ceiling == 0);
+  CHECK(rmf->tally().nonfinite == 0);
+}
+
+TEST_CASE("range MF: a staged frame (Doppler caps) equals its profiles compressed one by one") {
+  // process() moves each chirp's staged rows in blocks (transpose_rows);
+  // process_profile() writes one profile value by value. Same bits expected
+  // at every (chirp, channel, bin), across the 16-bin blocks.
+  using Small = fe::SmallDopplerRadarCaps;
+  const fe::FrontEndParams p = mptrack::test::small_doppler_params();
+  auto frame = std::make_unique<fe::RangeMatchedFilter<Small>>();
+  auto single = std::make_unique<fe::RangeMatchedFilter<Small>>();
+  REQUIRE(frame->init(p) == Status::kOk);
+  REQUIRE(single->init(p) == Status::kOk);
+  auto cube = std::make_unique<fe::RadarCube<Small>>();
+  mptrack::test::SynthTarget t;
+  t.range_m = 25.0;
+  t.radial_mps = 6.0;
+  mptrack::test::synthesize<Small>(p, &t, 1, 0.1, 5, *cube);
+  REQUIRE(frame->process(*cube) == Status::kOk);
+  constexpr std::size_t kV = Small::kNumTx * Small::kNumRx;
+  std::vector<float> re(Small::kNumSamples);
+  std::vector<float> im(Small::kNumSamples);
+  std::size_t differing = 0;
+  for (std::size_t c = 0; c < Small::kNumChirps; ++c) {
+    for (std::size_t v = 0; v < kV; ++v) {
+      const std::size_t o = fe::RadarCube<Small>::offset(c, v / Small::kNumRx, v % Small::kNumRx, 0);
+      for (std::size_t i = 0; i < Small::kNumSamples; ++i) {
+        re[i] = cube->iq[o + 2 * i];
+        im[i] = cube->iq[o + 2 * i + 1];
+      }
+      REQUIRE(single->process_profile(re.data(), im.data(), c * kV + v) == Status::kOk);
+      for (std::size_t g = 0; g < Small::kNumRangeBins; ++g) {
+        const float a[2] = {frame->value_re(c, v, g), frame->value_im(c, v, g)};
+        const float b[2] = {single->value_re(c, v, g), single->value_im(c, v, g)};
+        if (std::memcmp(a, b, sizeof a) != 0) ++differing;
+      }
+    }
+  }
+  CHECK(differing == 0);
+}
+
+TEST_CASE("range MF: every dispatch copy gives the baseline copy's bits") {
+  // Calibration, DC removal and a target in noise, float and int16 cubes:
+  // every operation of the stage outside the FFT (which has its own test).
+  using Small = fe::SmallDopplerRadarCaps;
+  fe::FrontEndParams p = mptrack::test::small_doppler_params();
+  p.remove_dc = true;
+  auto rmf = std::make_unique<fe::RangeMatchedFilter<Small>>();
+  REQUIRE(rmf->init(p) == Status::kOk);
+  constexpr std::size_t kV = Small::kNumTx * Small::kNumRx;
+  std::array<float, kV> cr{};
+  std::array<float, kV> ci{};
+  for (std::size_t v = 0; v < kV; ++v) {
+    cr[v] = 0.8f + 0.05f * static_cast<float>(v);
+    ci[v] = -0.3f + 0.07f * static_cast<float>(v);
+  }
+  REQUIRE(rmf->set_channel_calibration(cr, ci) == Status::kOk);
+  auto cube = std::make_unique<fe::RadarCube<Small>>();
+  auto cube16 = std::make_unique<fe::RadarCubeInt16<Small>>();
+  mptrack::test::SynthTarget t;
+  t.range_m = 40.0;
+  t.amplitude = 0.2;
+  mptrack::test::synthesize<Small>(p, &t, 1, 0.05, 9, *cube);
+  for (std::size_t i = 0; i < cube->iq.size(); ++i) {
+    cube16->iq[i] = static_cast<std::int16_t>(std::lround(static_cast<double>(cube->iq[i]) * 32768.0));
+  }
+  const auto outputs = [&](std::vector<float>& out) {
+    out.clear();
+    for (std::size_t g = 0; g < Small::kNumRangeBins; ++g) {
+      for (std::size_t c = 0; c < Small::kNumChirps; ++c) {
+        for (std::size_t v = 0; v < kV; ++v) {
+          out.push_back(rmf->value_re(c, v, g));
+          out.push_back(rmf->value_im(c, v, g));
+        }
+      }
+    }
+  };
+  std::vector<float> base;
+  std::vector<float> base16;
+  REQUIRE(rmf->process_copy(mptrack::dsp::FftCopy::kBaseline, *cube) == Status::kOk);
+  outputs(base);
+  REQUIRE(rmf->process_copy(mptrack::dsp::FftCopy::kBaseline, *cube16) == Status::kOk);
+  outputs(base16);
+  for (const auto copy : {mptrack::dsp::FftCopy::kAvx2, mptrack::dsp::FftCopy::kAvx512}) {
+    if (!mptrack::dsp::fft_copy_available(copy)) continue;
+    CAPTURE(mptrack::dsp::fft_copy_name(copy));
+    std::vector<float> got;
+    REQUIRE(rmf->process_copy(copy, *cube) == Status::kOk);
+    outputs(got);
+    CHECK(std::memcmp(got.data(), base.data(), base.size() * sizeof(float)) == 0);
+    REQUIRE(rmf->process_copy(copy, *cube16) == Status::kOk);
+    outputs(got);
+    CHECK(std::memcmp(got.data(), base16.data(), base16.size() * sizeof(float)) == 0);
+  }
 }
 
 TEST_CASE("range MF: init rejects a chirp that does not fit and non-positive waveform values") {

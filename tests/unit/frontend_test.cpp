@@ -303,6 +303,25 @@ TEST_CASE("frontend: an all-zero float frame is refused too") {
   CHECK(rig->fe.counters().frames_all_zero == 1);
 }
 
+TEST_CASE("frontend: a frame with a NaN and a sample beyond the ceiling counts once, as over it") {
+  // The range stage tallies the whole frame; the front end decides in the
+  // order of the frame checks: ceiling, then all zero, then NaN/Inf.
+  auto rig = std::make_unique<Rig<Small>>();
+  REQUIRE(rig->fe.init(mptrack::test::small_doppler_params()) == Status::kOk);
+  rig->cube.iq.fill(0.25f);
+  rig->cube.iq[17] = std::nanf("");
+  rig->cube.iq[rig->cube.iq.size() - 3] = 2e6f;  // default ceiling 1e6
+  CHECK(rig->fe.process(rig->cube, rig->scan) == Status::kInvalidInput);
+  CHECK(rig->fe.counters().frames_over_ceiling == 1);
+  CHECK(rig->fe.counters().frames_all_zero == 0);
+  CHECK(rig->fe.counters().frames_rejected == 1);
+  rig->cube.iq[rig->cube.iq.size() - 3] = 0.25f;  // NaN alone: rejected, not over the ceiling
+  CHECK(rig->fe.process(rig->cube, rig->scan) == Status::kInvalidInput);
+  CHECK(rig->fe.counters().frames_over_ceiling == 1);
+  CHECK(rig->fe.counters().frames_rejected == 2);
+  CHECK(rig->scan.measurements.empty());
+}
+
 TEST_CASE("frontend: a saturated int16 frame is processed, flagged kPartial and counted") {
   auto rig = std::make_unique<Int16Rig<Small>>();
   fe::FrontEndParams p = mptrack::test::small_doppler_params();

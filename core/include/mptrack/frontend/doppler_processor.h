@@ -73,19 +73,31 @@ class DopplerProcessor {
     return Status::kOk;
   }
 
-  /// Reads the range profiles of rmf and fills the snapshots.
+  /// Reads the range profiles of rmf and fills the snapshots. Runs the
+  /// widest copy this CPU has (process_copy).
   Status process(const RangeMatchedFilter<Caps>& rmf) {
+    return process_copy(dsp::widest_fft_copy(), rmf);
+  }
+
+  /// process() compiled for one ISA (the FFT's copies, dsp/fft_config.h;
+  /// never FMA): the window products and the fftshift row moves run as wide
+  /// as the batch FFT does. Each element sees the same operation in every
+  /// copy, so the same bits (tests/unit/frontend_doppler_test.cpp). A copy
+  /// this build or CPU lacks falls back to the baseline.
+  Status process_copy(dsp::FftCopy copy, const RangeMatchedFilter<Caps>& rmf) {
     if (!initialized_) return Status::kNotInitialized;
-    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-      if constexpr (kHasDoppler) {
-        transform(rmf.bin_re(g), rmf.bin_im(g), g);
-      } else {  // one chirp: bin g's row is the snapshot of cell (g, 0)
-        for (std::size_t v = 0; v < kNumVirtual; ++v) {
-          snap_re_[g * kNumVirtual + v] = rmf.bin_re(g)[v];
-          snap_im_[g * kNumVirtual + v] = rmf.bin_im(g)[v];
-        }
-      }
+#if MPTRACK_FFT_X86_DISPATCH
+    if (copy == dsp::FftCopy::kAvx512 && dsp::fft_copy_available(copy)) {
+      process_avx512(rmf);
+    } else if (copy == dsp::FftCopy::kAvx2 && dsp::fft_copy_available(copy)) {
+      process_avx2(rmf);
+    } else {
+      process_bins(rmf);
     }
+#else
+    static_cast<void>(copy);
+    process_bins(rmf);
+#endif
     return Status::kOk;
   }
 
@@ -117,6 +129,31 @@ class DopplerProcessor {
   bool initialized() const { return initialized_; }
 
  private:
+#if MPTRACK_FFT_X86_DISPATCH
+  __attribute__((target("avx2"), noinline)) void process_avx2(const RangeMatchedFilter<Caps>& rmf) {
+    process_bins(rmf);
+  }
+  __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) void process_avx512(
+      const RangeMatchedFilter<Caps>& rmf) {
+    process_bins(rmf);
+  }
+#endif
+
+  // Every helper is force-inlined (MPTRACK_FFT_INLINE), so each copy
+  // compiles all of it.
+  MPTRACK_FFT_INLINE void process_bins(const RangeMatchedFilter<Caps>& rmf) {
+    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+      if constexpr (kHasDoppler) {
+        transform(rmf.bin_re(g), rmf.bin_im(g), g);
+      } else {  // one chirp: bin g's row is the snapshot of cell (g, 0)
+        for (std::size_t v = 0; v < kNumVirtual; ++v) {
+          snap_re_[g * kNumVirtual + v] = rmf.bin_re(g)[v];
+          snap_im_[g * kNumVirtual + v] = rmf.bin_im(g)[v];
+        }
+      }
+    }
+  }
+
   // Lanes rounded up to a multiple of 8 (header); the extra lanes stay zero.
   static constexpr std::size_t kLanes = (kNumVirtual + 7) / 8 * 8;
   using Batch = dsp::FftBatch<(kNc > 1 ? kNc : 2), kLanes>;
@@ -124,7 +161,7 @@ class DopplerProcessor {
   // Slow-time FFTs of range bin g (pr, pi: chirp c, channel v at
   // c * kNumVirtual + v): windowed rows w[c] x, one batch, and the fftshift
   // d = (k + kNc/2) mod kNc, whole rows.
-  void transform(const float* pr, const float* pi, std::size_t g) {
+  MPTRACK_FFT_INLINE void transform(const float* pr, const float* pi, std::size_t g) {
     for (std::size_t c = 0; c < kNc; ++c) {
       scale_row(pr + c * kNumVirtual, window_[c], batch_.input_re(c));
       scale_row(pi + c * kNumVirtual, window_[c], batch_.input_im(c));
@@ -140,10 +177,10 @@ class DopplerProcessor {
     }
   }
 
-  static void scale_row(const float* __restrict x, float w, float* __restrict y) {
+  MPTRACK_FFT_INLINE static void scale_row(const float* __restrict x, float w, float* __restrict y) {
     for (std::size_t v = 0; v < kNumVirtual; ++v) y[v] = x[v] * w;
   }
-  static void copy_row(const float* __restrict x, float* __restrict y) {
+  MPTRACK_FFT_INLINE static void copy_row(const float* __restrict x, float* __restrict y) {
     for (std::size_t v = 0; v < kNumVirtual; ++v) y[v] = x[v];
   }
 

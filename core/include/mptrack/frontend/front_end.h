@@ -128,12 +128,9 @@ class FrontEnd {
     gate_hi_ = g_hi;
     max_detections_ = p.max_detections;
     min_noise_ = static_cast<float>(p.min_noise_power);
-    max_abs_sample_ = static_cast<float>(p.max_abs_sample);
     // Flag when full-scale samples > fraction x total (integer compare, exact).
     saturated_limit_ = static_cast<std::size_t>(
         p.saturation_fraction * static_cast<double>(2 * RadarCubeT<Caps, float>::kNumComplex));
-    // Positive rail of a left-justified adc_bits ADC (32767 at 16 bits).
-    positive_rail_ = static_cast<std::int16_t>(32768 - (std::int32_t{1} << (16 - p.adc_bits)));
     initialized_ = true;
     return Status::kOk;
   }
@@ -162,21 +159,25 @@ class FrontEnd {
     }
     MPTRACK_PROFILE_STEP(g_frontend);
     MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kRange);
-    const FrameCheck fc = check_frame(cube);
-    if (fc.over_ceiling > 0 || fc.zero == cube.iq.size()) {
-      ++counters_.frames_rejected;
-      ++(fc.over_ceiling > 0 ? counters_.frames_over_ceiling : counters_.frames_all_zero);
-      return Status::kInvalidInput;
-    }
-    const bool saturated = fc.full_scale > saturated_limit_;
-    if (saturated) ++counters_.frames_saturated;
+    // The frame checks (docs/algorithms/frontend.md §Frame input and checks)
+    // are tallied by the range stage as it reads the cube, and decided here
+    // in the same order as one check pass before it would: a sample beyond
+    // the ceiling (+-Inf included), then an all-zero frame, then NaN.
     std::uint32_t t0 = tick(times);
     const Status s = rmf_.process(cube);
-    if (s != Status::kOk) {
-      ++counters_.frames_rejected;
-      return s;
-    }
     std::uint32_t t1 = tick(times);
+    const FrameTally& ft = rmf_.tally();
+    if (ft.over_ceiling > 0 || ft.zero == cube.iq.size() || s != Status::kOk) {
+      ++counters_.frames_rejected;
+      if (ft.over_ceiling > 0) {
+        ++counters_.frames_over_ceiling;
+      } else if (ft.zero == cube.iq.size()) {
+        ++counters_.frames_all_zero;
+      }
+      return Status::kInvalidInput;
+    }
+    const bool saturated = ft.full_scale > saturated_limit_;
+    if (saturated) ++counters_.frames_saturated;
     stamp(times, FrontEndStage::kRange, t0, t1);
     MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kDoppler);
     MPTRACK_TRY(dop_.process(rmf_));
@@ -224,32 +225,6 @@ class FrontEnd {
     hi = lo;
     while (hi < kNumRangeBins && static_cast<double>(hi) * bin_m <= p.max_range_m) ++hi;
   }
-  /// Sample tallies of one frame (check_frame).
-  struct FrameCheck {
-    std::size_t zero = 0;          ///< sample values exactly 0
-    std::size_t full_scale = 0;    ///< int16: at a rail (-32768, or >= positive_rail_)
-    std::size_t over_ceiling = 0;  ///< float: |x| > max_abs_sample (NaN is left to rmf_)
-  };
-
-  // One pass over the cube before any processing (docs/reliability.md F2,
-  // ADC frames). Finite float samples near 1e35 pass the NaN/Inf check but
-  // overflow the power map, hence the ceiling.
-  template <class Sample>
-  FrameCheck check_frame(const RadarCubeT<Caps, Sample>& cube) const {
-    // Counts as sums of comparisons (no branch per sample, so the loop
-    // vectorises); a zero is never full scale, nor beyond a ceiling >= 0.
-    FrameCheck f;
-    for (const Sample x : cube.iq) {
-      f.zero += static_cast<std::size_t>(x == Sample(0));
-      if constexpr (std::is_same_v<Sample, std::int16_t>) {
-        f.full_scale += static_cast<std::size_t>((x == std::int16_t{-32768}) | (x >= positive_rail_));
-      } else {
-        f.over_ceiling += static_cast<std::size_t>((x > max_abs_sample_) | (x < -max_abs_sample_));
-      }
-    }
-    return f;
-  }
-
   static std::uint32_t tick(const FrontEndStageTimes* t) {
     return (t != nullptr && t->clock != nullptr) ? t->clock() : 0u;
   }
@@ -401,9 +376,7 @@ class FrontEnd {
   std::size_t max_detections_ = 0;
   std::size_t last_dropped_ = 0;
   float min_noise_ = 0.0f;
-  float max_abs_sample_ = 1e6f;
   std::size_t saturated_limit_ = 0;
-  std::int16_t positive_rail_ = 32767;  ///< int16 code of positive full scale (init: adc_bits)
   bool initialized_ = false;
 };
 

@@ -25,6 +25,8 @@
 #include <type_traits>
 
 #include "mptrack/dsp/fft.h"
+#include "mptrack/dsp/fft_config.h"
+#include "mptrack/dsp/transpose_rows.h"
 #include "mptrack/frontend/frontend_params.h"
 #include "mptrack/frontend/radar_cube.h"
 #include "mptrack/math/constants.h"
@@ -33,6 +35,16 @@
 #include "mptrack/validate.h"
 
 namespace mptrack::frontend {
+
+/// Sample tallies of one frame (docs/algorithms/frontend.md §Frame input and checks,
+/// docs/reliability.md F2), counted by the range stage while it reads the cube: the frame is
+/// streamed through memory once, not once to check it and once to compress it.
+struct FrameTally {
+  std::size_t zero = 0;          ///< sample values exactly 0
+  std::size_t full_scale = 0;    ///< int16: at a rail (-32768, or >= the positive rail)
+  std::size_t over_ceiling = 0;  ///< float: |x| > max_abs_sample (+-Inf included, NaN not)
+  std::size_t nonfinite = 0;     ///< float: NaN or +-Inf
+};
 
 template <class Caps>
 class RangeMatchedFilter {
@@ -58,6 +70,9 @@ class RangeMatchedFilter {
     MPTRACK_TRY(fft_.init());
     chirp_len_ = len;
     remove_dc_ = p.remove_dc;
+    ceiling_ = static_cast<float>(p.max_abs_sample);
+    // Positive rail of a left-justified adc_bits ADC (32767 at 16 bits).
+    positive_rail_ = static_cast<std::int16_t>(32768 - (std::int32_t{1} << (16 - p.adc_bits)));
     for (std::size_t v = 0; v < kNumVirtual; ++v) {
       cal_re_[v] = 1.0f;
       cal_im_[v] = 0.0f;
@@ -92,24 +107,42 @@ class RangeMatchedFilter {
     return Status::kOk;
   }
 
-  /// Compresses every (chirp, virtual channel) of the cube. kNotInitialized
-  /// before init(); kInvalidInput (outputs untouched past the bad profile
-  /// are left stale, the caller discards the frame) if a sample is NaN/Inf.
+  /// Compresses every (chirp, virtual channel) of the cube and tallies its
+  /// samples (tally()). kNotInitialized before init(); kInvalidInput if a
+  /// sample is NaN/Inf: the profiles holding one are not compressed (their
+  /// outputs are stale, the caller discards the frame), the others are, so
+  /// the tally covers the whole frame. Runs the widest copy this CPU has.
   template <class Sample>
   Status process(const RadarCubeT<Caps, Sample>& cube) {
-    if (!initialized_) return Status::kNotInitialized;
-    // Chirp outer, channel inner: the chirp's profiles are adjacent in the
-    // cube (read as one stream), and its kNumRangeBins output runs of
-    // kNumVirtual values complete while they are in L1.
-    for (std::size_t c = 0; c < Caps::kNumChirps; ++c) {
-      for (std::size_t v = 0; v < kNumVirtual; ++v) {
-        MPTRACK_TRY(load(cube.iq.data() + RadarCubeT<Caps, Sample>::offset(c, 0, 0, 0) +
-                         2 * v * Caps::kNumSamples));
-        compress(c, v);
-      }
-    }
-    return Status::kOk;
+    return process_copy(dsp::widest_fft_copy(), cube);
   }
+
+  /// process() compiled for one ISA: on x86-64 hosts the FFT's copies
+  /// (dsp/fft_config.h: baseline SSE2, AVX2, AVX-512, never FMA), so the
+  /// de-interleaving load, the reference product and the calibrated store
+  /// run as wide as the FFT does. Each element sees the same operations in
+  /// every copy, so the same bits (tests/unit/frontend_range_test.cpp).
+  /// A copy this build or CPU lacks falls back to the baseline.
+  template <class Sample>
+  Status process_copy(dsp::FftCopy copy, const RadarCubeT<Caps, Sample>& cube) {
+    if (!initialized_) return Status::kNotInitialized;
+#if MPTRACK_FFT_X86_DISPATCH
+    if (copy == dsp::FftCopy::kAvx512 && dsp::fft_copy_available(copy)) {
+      process_avx512(cube);
+    } else if (copy == dsp::FftCopy::kAvx2 && dsp::fft_copy_available(copy)) {
+      process_avx2(cube);
+    } else {
+      process_frame<dsp::FftCopy::kBaseline>(cube);
+    }
+#else
+    static_cast<void>(copy);
+    process_frame<dsp::FftCopy::kBaseline>(cube);
+#endif
+    return tally_.nonfinite > 0 ? Status::kInvalidInput : Status::kOk;
+  }
+
+  /// Sample tallies of the last process() (all zero before the first).
+  const FrameTally& tally() const { return tally_; }
 
   /// Compresses one profile given as planar float samples (kNumSamples
   /// each). Used by process() and by tests that bypass the cube.
@@ -124,6 +157,7 @@ class RangeMatchedFilter {
     zero_tail();
     if (remove_dc_) subtract_mean();
     compress(profile / kNumVirtual, profile % kNumVirtual);
+    if constexpr (kStaged) store_row(profile / kNumVirtual, profile % kNumVirtual);
     return Status::kOk;
   }
 
@@ -155,6 +189,13 @@ class RangeMatchedFilter {
   /// layout was measured: 1.32 against 0.95-1.0 ms).
   static constexpr std::size_t kBinStride =
       Caps::kNumChirps * kNumVirtual + (Caps::kNumChirps > 1 ? 16 : 0);
+  /// With a Doppler axis a profile's kNumRangeBins values lie kBinStride
+  /// apart in the output (6 KiB at 128 chirps x 12 channels): one scalar
+  /// store per value. Staged, each profile is written in order into a
+  /// [v][g] row of the chirp's staging buffer and the chirp then moves to the
+  /// output as runs of kNumVirtual values (store_chirp). Single-chirp
+  /// radars write their nearly contiguous output directly.
+  static constexpr bool kStaged = Caps::kNumChirps > 1;
   /// Output layout [g][c][v]: the channels of one (bin, chirp) contiguous,
   /// one input row of the Doppler stage's batch.
   static constexpr std::size_t index(std::size_t c, std::size_t v, std::size_t g) {
@@ -169,37 +210,90 @@ class RangeMatchedFilter {
   bool initialized() const { return initialized_; }
 
  private:
+#if MPTRACK_FFT_X86_DISPATCH
   template <class Sample>
-  Status load(const Sample* src) {
-    if constexpr (std::is_same_v<Sample, float>) {
-      // One flag for the whole profile instead of an exit per sample, and
-      // the NaN/Inf test on the bit pattern (exponent all ones) instead of a
-      // float compare per sample: integer and/compare/or, so the
-      // de-interleaving copy vectorises; a bad profile is still refused
-      // before compress().
-      std::uint32_t nonfinite = 0u;
-      for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
-        const float re = src[2 * i];
-        const float im = src[2 * i + 1];
-        nonfinite |= exponent_all_ones(re) | exponent_all_ones(im);
-        buf_re_[i] = re;
-        buf_im_[i] = im;
+  __attribute__((target("avx2"), noinline)) void process_avx2(const RadarCubeT<Caps, Sample>& cube) {
+    process_frame<dsp::FftCopy::kAvx2>(cube);
+  }
+  template <class Sample>
+  __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) void process_avx512(
+      const RadarCubeT<Caps, Sample>& cube) {
+    process_frame<dsp::FftCopy::kAvx512>(cube);
+  }
+#endif
+
+  // Chirp outer, channel inner: the chirp's profiles are adjacent in the
+  // cube (read as one stream, once: the frame checks are tallied on the
+  // way), and its kNumRangeBins output runs of kNumVirtual values are
+  // written together (store_chirp). Every helper is force-inlined
+  // (MPTRACK_FFT_INLINE), so each copy compiles all of it.
+  template <dsp::FftCopy kCopy, class Sample>
+  MPTRACK_FFT_INLINE void process_frame(const RadarCubeT<Caps, Sample>& cube) {
+    tally_ = FrameTally{};
+    constexpr std::size_t kProfile = 2 * Caps::kNumSamples;  // Sample values
+    for (std::size_t c = 0; c < Caps::kNumChirps; ++c) {
+      for (std::size_t v = 0; v < kNumVirtual; ++v) {
+        const Sample* src = cube.iq.data() + RadarCubeT<Caps, Sample>::offset(c, 0, 0, 0) +
+                            v * kProfile;
+        if (load(src)) compress(c, v);
       }
-      if (nonfinite != 0u) return Status::kInvalidInput;
-    } else {
-      for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
-        buf_re_[i] = static_cast<float>(src[2 * i]) * kInt16ToFloat;
-        buf_im_[i] = static_cast<float>(src[2 * i + 1]) * kInt16ToFloat;
-      }
+      if constexpr (kStaged) store_chirp<kCopy>(c);
     }
+  }
+
+  // De-interleaves one profile into buf_ and adds its samples to tally_;
+  // false if it holds a NaN/Inf (not to be compressed). The tallies are
+  // sums of comparisons and the NaN/Inf test is on the bit pattern
+  // (exponent all ones), so the copy vectorises with no branch per sample.
+  // Per profile the counts fit 32 bits (kNumSamples < 2^31).
+  MPTRACK_FFT_INLINE bool load(const float* src) {
+    std::uint32_t nonfinite = 0u;
+    std::uint32_t zero = 0u;
+    std::uint32_t over = 0u;
+    const float hi = ceiling_;
+    const float lo = -ceiling_;
+    for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
+      const float re = src[2 * i];
+      const float im = src[2 * i + 1];
+      nonfinite += exponent_all_ones(re) + exponent_all_ones(im);
+      zero += static_cast<std::uint32_t>(re == 0.0f) + static_cast<std::uint32_t>(im == 0.0f);
+      over += static_cast<std::uint32_t>((re > hi) | (re < lo)) +
+              static_cast<std::uint32_t>((im > hi) | (im < lo));
+      buf_re_[i] = re;
+      buf_im_[i] = im;
+    }
+    tally_.nonfinite += nonfinite;
+    tally_.zero += zero;
+    tally_.over_ceiling += over;
+    if (nonfinite != 0u) return false;
     zero_tail();
     if (remove_dc_) subtract_mean();
-    return Status::kOk;
+    return true;
+  }
+
+  MPTRACK_FFT_INLINE bool load(const std::int16_t* src) {
+    std::uint32_t zero = 0u;
+    std::uint32_t rail = 0u;
+    const std::int16_t top = positive_rail_;
+    for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
+      const std::int16_t re = src[2 * i];
+      const std::int16_t im = src[2 * i + 1];
+      zero += static_cast<std::uint32_t>(re == 0) + static_cast<std::uint32_t>(im == 0);
+      rail += static_cast<std::uint32_t>((re == std::int16_t{-32768}) | (re >= top)) +
+              static_cast<std::uint32_t>((im == std::int16_t{-32768}) | (im >= top));
+      buf_re_[i] = static_cast<float>(re) * kInt16ToFloat;
+      buf_im_[i] = static_cast<float>(im) * kInt16ToFloat;
+    }
+    tally_.zero += zero;
+    tally_.full_scale += rail;
+    zero_tail();
+    if (remove_dc_) subtract_mean();
+    return true;
   }
 
   // DC (static leakage) removal: subtract the complex mean of the
   // kNumSamples samples, accumulated in index order.
-  void subtract_mean() {
+  MPTRACK_FFT_INLINE void subtract_mean() {
     float sr = 0.0f;
     float si = 0.0f;
     for (std::size_t i = 0; i < Caps::kNumSamples; ++i) {
@@ -214,7 +308,7 @@ class RangeMatchedFilter {
     }
   }
 
-  void zero_tail() {
+  MPTRACK_FFT_INLINE void zero_tail() {
     for (std::size_t i = Caps::kNumSamples; i < kM; ++i) {
       buf_re_[i] = 0.0f;
       buf_im_[i] = 0.0f;
@@ -222,13 +316,17 @@ class RangeMatchedFilter {
   }
 
   // 1 if x is NaN or +-Inf (IEEE 754 binary32: exponent field all ones).
-  static std::uint32_t exponent_all_ones(float x) {
+  MPTRACK_FFT_INLINE static std::uint32_t exponent_all_ones(float x) {
     std::uint32_t u = 0;
     std::memcpy(&u, &x, sizeof u);
     return static_cast<std::uint32_t>((u & 0x7f800000u) == 0x7f800000u);
   }
 
-  void compress(std::size_t c, std::size_t v) {
+  // Pulse compression of the profile in buf_, then the calibration multiply
+  // (with c_v = 1 it reproduces the input bits) into the output: into the
+  // chirp's staging row v when staged (store_chirp() then moves whole rows),
+  // else straight into the [g][c][v] output at stride kBinStride.
+  MPTRACK_FFT_INLINE void compress(std::size_t c, std::size_t v) {
     fft_.forward(buf_re_.data(), buf_im_.data());
     for (std::size_t k = 0; k < kM; ++k) {
       const float yr = buf_re_[k];
@@ -237,14 +335,41 @@ class RangeMatchedFilter {
       buf_im_[k] = yr * ref_im_[k] + yi * ref_re_[k];
     }
     fft_.inverse(buf_re_.data(), buf_im_.data());
-    float* dst_re = &out_re_[index(c, v, 0)];
-    float* dst_im = &out_im_[index(c, v, 0)];
-    // Calibration multiply; with c_v = 1 it reproduces the input bits.
     const float cr = cal_re_[v];
     const float ci = cal_im_[v];
+    float* dst_re = kStaged ? &stage_re_[v * kNumRangeBins] : &out_re_[index(c, v, 0)];
+    float* dst_im = kStaged ? &stage_im_[v * kNumRangeBins] : &out_im_[index(c, v, 0)];
+    constexpr std::size_t kStride = kStaged ? 1 : kBinStride;
     for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-      dst_re[g * kBinStride] = buf_re_[g] * cr - buf_im_[g] * ci;
-      dst_im[g * kBinStride] = buf_im_[g] * cr + buf_re_[g] * ci;
+      dst_re[g * kStride] = buf_re_[g] * cr - buf_im_[g] * ci;
+      dst_im[g * kStride] = buf_im_[g] * cr + buf_re_[g] * ci;
+    }
+  }
+
+  // Staged: the kNumVirtual rows of chirp c, [v][g], into the output's
+  // [g][c][v] runs, one contiguous run of kNumVirtual values per bin.
+  template <dsp::FftCopy kCopy>
+  MPTRACK_FFT_INLINE void store_chirp(std::size_t c) {
+#if MPTRACK_FFT_X86_DISPATCH
+    if constexpr (kCopy == dsp::FftCopy::kAvx512) {
+      dsp::transpose_rows_avx512<kNumVirtual, kNumRangeBins, kBinStride>(stage_re_.data(),
+                                                                         &out_re_[index(c, 0, 0)]);
+      dsp::transpose_rows_avx512<kNumVirtual, kNumRangeBins, kBinStride>(stage_im_.data(),
+                                                                         &out_im_[index(c, 0, 0)]);
+      return;
+    }
+#endif
+    dsp::transpose_rows<kNumVirtual, kNumRangeBins, kBinStride>(stage_re_.data(),
+                                                                &out_re_[index(c, 0, 0)]);
+    dsp::transpose_rows<kNumVirtual, kNumRangeBins, kBinStride>(stage_im_.data(),
+                                                                &out_im_[index(c, 0, 0)]);
+  }
+
+  // Staged: row v of chirp c alone (process_profile).
+  void store_row(std::size_t c, std::size_t v) {
+    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+      out_re_[index(c, v, g)] = stage_re_[v * kNumRangeBins + g];
+      out_im_[index(c, v, g)] = stage_im_[v * kNumRangeBins + g];
     }
   }
 
@@ -255,10 +380,16 @@ class RangeMatchedFilter {
   alignas(16) std::array<float, kM> buf_im_{};
   std::array<float, kNumRangeBins * kBinStride> out_re_{};
   std::array<float, kNumRangeBins * kBinStride> out_im_{};
+  // Chirp staging (kStaged): [v][g], the calibrated profiles of one chirp.
+  alignas(64) std::array<float, kStaged ? kNumVirtual * kNumRangeBins : 0> stage_re_{};
+  alignas(64) std::array<float, kStaged ? kNumVirtual * kNumRangeBins : 0> stage_im_{};
   std::array<float, kNumVirtual> cal_re_{};
   std::array<float, kNumVirtual> cal_im_{};
+  FrameTally tally_{};
   std::size_t chirp_len_ = 0;
   bool remove_dc_ = false;
+  float ceiling_ = 1e6f;                ///< FrontEndParams::max_abs_sample
+  std::int16_t positive_rail_ = 32767;  ///< int16 code of positive full scale (init: adc_bits)
   float coherent_gain_ = 0.0f;
   float noise_gain_ = 0.0f;
   bool initialized_ = false;
