@@ -20,10 +20,12 @@
 
 namespace mptrack::dsp {
 
-/// Portable copy: out[g * kOutStride + r] = rows[r * G + g].
+/// Portable copy: out[g * kOutStride + r] = rows[r * G + g] for bins
+/// g = first..G-1 (first > 0: the tail the AVX-512 copy leaves).
 template <std::size_t R, std::size_t G, std::size_t kOutStride>
-MPTRACK_FFT_INLINE void transpose_rows(const float* __restrict rows, float* __restrict out) {
-  for (std::size_t g = 0; g < G; ++g) {
+MPTRACK_FFT_INLINE void transpose_rows(const float* __restrict rows, float* __restrict out,
+                                       std::size_t first = 0) {
+  for (std::size_t g = first; g < G; ++g) {
     float* __restrict run = out + g * kOutStride;
     for (std::size_t r = 0; r < R; ++r) run[r] = rows[r * G + g];
   }
@@ -96,9 +98,7 @@ __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) vo
         _mm512_mask_storeu_ps(out + (16 * b + j) * kOutStride, kLanes, v[j]);
       }
     }
-    for (std::size_t g = 16 * kBlocks; g < G; ++g) {
-      for (std::size_t r = 0; r < R; ++r) out[g * kOutStride + r] = rows[r * G + g];
-    }
+    transpose_rows<R, G, kOutStride>(rows, out, 16 * kBlocks);
   }
 }
 #endif
