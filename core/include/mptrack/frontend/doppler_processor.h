@@ -160,12 +160,13 @@ class DopplerProcessor {
 
   // Slow-time FFTs of range bin g (pr, pi: chirp c, channel v at
   // c * kNumVirtual + v): windowed rows w[c] x, one batch, and the fftshift
-  // d = (k + kNc/2) mod kNc, whole rows.
+  // d = (k + kNc/2) mod kNc, whole rows. The real rows and the imaginary
+  // rows are scaled in separate loops: interleaved in one loop, GCC 12
+  // built each 12-value row from scalar loads and inserts (2 floats at a
+  // time) instead of one 8- and one 4-wide load (bench/README.md session 15).
   MPTRACK_FFT_INLINE void transform(const float* pr, const float* pi, std::size_t g) {
-    for (std::size_t c = 0; c < kNc; ++c) {
-      scale_row(pr + c * kNumVirtual, window_[c], batch_.input_re(c));
-      scale_row(pi + c * kNumVirtual, window_[c], batch_.input_im(c));
-    }
+    for (std::size_t c = 0; c < kNc; ++c) scale_row(pr + c * kNumVirtual, window_[c], batch_.input_re(c));
+    for (std::size_t c = 0; c < kNc; ++c) scale_row(pi + c * kNumVirtual, window_[c], batch_.input_im(c));
     batch_.forward();
     float* sr = snap_re_.data() + g * kNc * kNumVirtual;
     float* si = snap_im_.data() + g * kNc * kNumVirtual;

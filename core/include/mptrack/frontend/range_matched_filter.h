@@ -28,6 +28,7 @@
 #include "mptrack/dsp/fft_config.h"
 #include "mptrack/dsp/transpose_rows.h"
 #include "mptrack/frontend/frontend_params.h"
+#include "mptrack/frontend/prefetch.h"
 #include "mptrack/frontend/radar_cube.h"
 #include "mptrack/math/constants.h"
 #include "mptrack/math/detmath.h"
@@ -225,16 +226,22 @@ class RangeMatchedFilter {
   // Chirp outer, channel inner: the chirp's profiles are adjacent in the
   // cube (read as one stream, once: the frame checks are tallied on the
   // way), and its kNumRangeBins output runs of kNumVirtual values are
-  // written together (store_chirp). Every helper is force-inlined
-  // (MPTRACK_FFT_INLINE), so each copy compiles all of it.
+  // written together (store_chirp). The profile one chirp ahead is
+  // prefetched (prefetch.h; measured under memory contention, bench/README.md
+  // session 15). Every helper is force-inlined (MPTRACK_FFT_INLINE), so each
+  // copy compiles all of it.
   template <dsp::FftCopy kCopy, class Sample>
   MPTRACK_FFT_INLINE void process_frame(const RadarCubeT<Caps, Sample>& cube) {
     tally_ = FrameTally{};
     constexpr std::size_t kProfile = 2 * Caps::kNumSamples;  // Sample values
+    constexpr std::size_t kAhead = kNumVirtual;              // profiles: one chirp
     for (std::size_t c = 0; c < Caps::kNumChirps; ++c) {
       for (std::size_t v = 0; v < kNumVirtual; ++v) {
         const Sample* src = cube.iq.data() + RadarCubeT<Caps, Sample>::offset(c, 0, 0, 0) +
                             v * kProfile;
+        if (c * kNumVirtual + v + kAhead < kNumProfiles) {
+          prefetch_read(src + kAhead * kProfile, kProfile * sizeof(Sample));
+        }
         if (load(src)) compress(c, v);
       }
       if constexpr (kStaged) store_chirp<kCopy>(c);
