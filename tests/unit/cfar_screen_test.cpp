@@ -259,6 +259,49 @@ TEST_CASE("CfarScreen keeps every detection where the two edge regions are apart
   CHECK(kept <= meet + 3);
 }
 
+namespace {
+
+// The cells kept under kShift for CA and GO over several (G, T), ranges and
+// noise lines with strong cells near both ends, with the edge cells' window
+// sums in closed form (planned_only false) or from the planned segment
+// tables (true).
+template <std::size_t Len>
+std::vector<std::uint16_t> kept_shift_edges(bool planned_only) {
+  auto screen = std::make_unique<fe::CfarScreen<Len>>();
+  screen->set_planned_edges_only(planned_only);
+  std::vector<std::uint16_t> all;
+  std::mt19937_64 rng(21);
+  std::exponential_distribution<float> expo(1.0f);
+  std::vector<float> line(Len);
+  const std::size_t shapes[][2] = {{0, 1}, {2, 8}, {3, 13}, {1, 4}};
+  for (fe::CfarType type : {fe::CfarType::kCellAveraging, fe::CfarType::kGreatestOf}) {
+    for (const auto& gt : shapes) {
+      if (2 * (gt[0] + gt[1]) + 1 > Len) continue;
+      const fe::Cfar cfar = make(type, fe::CfarEdge::kShift, gt[0], gt[1], 5e-2);
+      for (int rep = 0; rep < 6; ++rep) {
+        for (float& x : line) x = expo(rng);
+        line[static_cast<std::size_t>(rep)] = 30.0f;            // lower edge
+        line[Len - 1 - static_cast<std::size_t>(rep)] = 30.0f;  // upper edge
+        const std::size_t lo = static_cast<std::size_t>(rep % 3);
+        const std::size_t hi = Len - static_cast<std::size_t>(rep % 2);
+        const std::size_t kept = screen->run(cfar, line.data(), lo, hi);
+        all.push_back(static_cast<std::uint16_t>(kept));
+        all.insert(all.end(), screen->cells(), screen->cells() + kept);
+      }
+    }
+  }
+  return all;
+}
+
+}  // namespace
+
+TEST_CASE("CfarScreen: kShift edge sums in closed form keep the cells of the planned tables") {
+  // Edge regions apart (300, 131) and meeting (41 <= 2 E at G + T = 10).
+  CHECK(kept_shift_edges<kLen>(false) == kept_shift_edges<kLen>(true));
+  CHECK(kept_shift_edges<131>(false) == kept_shift_edges<131>(true));
+  CHECK(kept_shift_edges<41>(false) == kept_shift_edges<41>(true));
+}
+
 TEST_CASE("CfarScreen keeps no cell of an all-zero line") {
   auto screen = std::make_unique<Screen>();
   const fe::Cfar ca = make(fe::CfarType::kCellAveraging, fe::CfarEdge::kShift);

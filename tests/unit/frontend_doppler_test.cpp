@@ -25,8 +25,8 @@ struct Stages {
 };
 
 double mag(const fe::DopplerProcessor<Caps>& d, std::size_t g, std::size_t dd, std::size_t v) {
-  return std::hypot(static_cast<double>(d.snapshot_re(g, dd)[v]),
-                    static_cast<double>(d.snapshot_im(g, dd)[v]));
+  return std::hypot(static_cast<double>(d.snapshot_re(g, dd, v)),
+                    static_cast<double>(d.snapshot_im(g, dd, v)));
 }
 
 }  // namespace
@@ -84,13 +84,14 @@ TEST_CASE("doppler: a Hann window keeps the peak bin and scales it by sum w") {
 
 namespace {
 
-// 3 x 2 = 6 virtual channels: the batch pads them to 8 lanes (doppler_processor.h).
+// 3 x 2 = 6 virtual channels, 28 range bins: one full block of 16 bins and
+// a partial one of 12 lanes (doppler_processor.h).
 struct SixChannelCaps {
   static constexpr std::size_t kNumTx = 3;
   static constexpr std::size_t kNumRx = 2;
   static constexpr std::size_t kNumSamples = 64;
   static constexpr std::size_t kRangeFftSize = 64;
-  static constexpr std::size_t kNumRangeBins = 32;
+  static constexpr std::size_t kNumRangeBins = 28;
   static constexpr std::size_t kNumChirps = 16;
   static constexpr std::size_t kNumAngleBins = 16;
   static constexpr std::size_t kMaxDetections = 16;
@@ -105,7 +106,7 @@ struct SixChannelStages {
 }  // namespace
 
 TEST_CASE("doppler: every snapshot value has the bits of Fft<N_c> on the windowed chirps") {
-  // The batch (lane = channel, padded lanes) must give, for every (range bin,
+  // The batch (lane = range bin, 16 per block) must give, for every (range bin,
   // channel), the bits of one Fft<N_c>::forward() of w[c] r_c, fftshift-ed,
   // in every dispatch copy of the stage this CPU can run.
   fe::FrontEndParams p = mptrack::test::small_doppler_params();
@@ -143,8 +144,8 @@ TEST_CASE("doppler: every snapshot value has the bits of Fft<N_c> on the windowe
         fft.forward(re, im);
         for (std::size_t k = 0; k < kNc; ++k) {
           const std::size_t d = (k + kNc / 2) % kNc;
-          const bool same = mptrack::test::same_bits_or_nan(s->dop.snapshot_re(g, d)[v], re[k]) &&
-                            mptrack::test::same_bits_or_nan(s->dop.snapshot_im(g, d)[v], im[k]);
+          const bool same = mptrack::test::same_bits_or_nan(s->dop.snapshot_re(g, d, v), re[k]) &&
+                            mptrack::test::same_bits_or_nan(s->dop.snapshot_im(g, d, v), im[k]);
           if (!same) ++differing;
         }
       }
@@ -167,8 +168,8 @@ TEST_CASE("doppler: with one chirp the stage is a transpose (seed 004, no Dopple
   CHECK_FALSE(fe::DopplerProcessor<C1>::kHasDoppler);
   CHECK(dop->velocity_mps(0.0) == 0.0);
   for (std::size_t v = 0; v < 9; ++v) {
-    CHECK(dop->snapshot_re(17, 0)[v] == rmf->value_re(0, v, 17));
-    CHECK(dop->snapshot_im(17, 0)[v] == rmf->value_im(0, v, 17));
+    CHECK(dop->snapshot_re(17, 0, v) == rmf->value_re(0, v, 17));
+    CHECK(dop->snapshot_im(17, 0, v) == rmf->value_im(0, v, 17));
   }
 }
 

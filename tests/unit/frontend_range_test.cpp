@@ -264,6 +264,31 @@ TEST_CASE("range MF: the float tally counts zeros, samples beyond the ceiling an
   CHECK(rmf->tally().full_scale == 0);
 }
 
+TEST_CASE("range MF: channel by channel, the tally covers the channels run since begin_frame") {
+  // Caps: 9 channels of 256 complex samples, one chirp. Channel 2 holds 3 zero
+  // values, channel 5 one NaN; begin_frame() clears what an earlier frame left.
+  fe::FrontEndParams p;
+  auto rmf = std::make_unique<fe::RangeMatchedFilter<Caps>>();
+  REQUIRE(rmf->init(p) == Status::kOk);
+  auto cube = std::make_unique<fe::RadarCube<Caps>>();
+  cube->iq.fill(0.25f);
+  const std::size_t profile = 2 * Caps::kNumSamples;
+  cube->iq[2 * profile + 7] = 0.0f;
+  cube->iq[2 * profile + 8] = 0.0f;
+  cube->iq[2 * profile + 9] = 0.0f;
+  cube->iq[5 * profile + 1] = std::nanf("");
+  CHECK(rmf->process(*cube) == Status::kInvalidInput);  // leaves a tally behind
+  rmf->begin_frame();
+  CHECK(rmf->tally().zero == 0);
+  CHECK(rmf->process_channel(*cube, 2) == Status::kOk);
+  CHECK(rmf->tally().zero == 3);
+  CHECK(rmf->process_channel(*cube, 5) == Status::kInvalidInput);
+  CHECK(rmf->tally().nonfinite == 1);
+  CHECK(rmf->tally().zero == 3);
+  CHECK(rmf->process_channel(*cube, 9) == Status::kInvalidArgument);  // 9 channels: 0..8
+  CHECK(rmf->tally().zero == 3);
+}
+
 TEST_CASE("range MF: the int16 tally counts zeros and codes at either rail of the ADC") {
   fe::FrontEndParams p;
   p.adc_bits = 12;  // rails -32768 and 32768 - 16 = 32752
@@ -286,10 +311,10 @@ TEST_CASE("range MF: the int16 tally counts zeros and codes at either rail of th
   CHECK(rmf->tally().nonfinite == 0);
 }
 
-TEST_CASE("range MF: a staged frame (Doppler caps) equals its profiles compressed one by one") {
-  // process() moves each chirp's staged rows in blocks (transpose_rows);
-  // process_profile() writes one profile value by value. Same bits expected
-  // at every (chirp, channel, bin), across the 16-bin blocks.
+TEST_CASE("range MF: a frame (Doppler caps) equals its profiles compressed one by one") {
+  // process() runs channel by channel, chirps inner, in the dispatch copy
+  // this CPU has; process_profile() compresses one profile in the portable
+  // code. Same bits expected at every (chirp, channel, bin).
   using Small = fe::SmallDopplerRadarCaps;
   const fe::FrontEndParams p = mptrack::test::small_doppler_params();
   auto frame = std::make_unique<fe::RangeMatchedFilter<Small>>();

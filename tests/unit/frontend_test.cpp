@@ -207,7 +207,13 @@ TEST_CASE("frontend: stage times come from the caller's clock") {
   times.clock = &fake_clock;
   rig->cube.iq[0] = 1e-3f;  // an all-zero frame is refused before any stage runs
   REQUIRE(rig->fe.process(rig->cube, rig->scan, &times) == Status::kOk);
-  for (std::uint32_t t : times.ticks) CHECK(t == 10u);
+  // The clock advances 10 a call. Range and Doppler run channel by channel,
+  // each channel's share between two adjacent calls: 10 per channel, summed.
+  constexpr std::uint32_t kChannels = Seed::kNumTx * Seed::kNumRx;
+  CHECK(times.ticks[static_cast<std::size_t>(fe::FrontEndStage::kRange)] == 10u * kChannels);
+  CHECK(times.ticks[static_cast<std::size_t>(fe::FrontEndStage::kDoppler)] == 10u * kChannels);
+  CHECK(times.ticks[static_cast<std::size_t>(fe::FrontEndStage::kAngle)] == 10u);
+  CHECK(times.ticks[static_cast<std::size_t>(fe::FrontEndStage::kDetect)] == 10u);
 }
 
 TEST_CASE("frontend: process does not allocate (seed 004 and Doppler configurations)") {

@@ -163,8 +163,8 @@ void golden_case_frontend_doppler_angle(GoldenSink& g) {
   g.require(s.ang.process(s.dop) == Status::kOk, "angle process");
   for (std::size_t g_bin = 0; g_bin < Small::kNumRangeBins; g_bin += 3) {
     for (std::size_t d = 0; d < Small::kNumChirps; d += 5) {
-      g.add(lbl("snap_re_", g_bin * 100 + d), s.dop.snapshot_re(g_bin, d)[3]);
-      g.add(lbl("snap_im_", g_bin * 100 + d), s.dop.snapshot_im(g_bin, d)[3]);
+      g.add(lbl("snap_re_", g_bin * 100 + d), s.dop.snapshot_re(g_bin, d, 3));
+      g.add(lbl("snap_im_", g_bin * 100 + d), s.dop.snapshot_im(g_bin, d, 3));
     }
   }
   for (std::size_t i = 0; i < fe::AngleProcessor<Small>::kMapSize; i += 97) {

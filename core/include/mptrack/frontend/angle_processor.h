@@ -81,14 +81,16 @@ class AngleProcessor {
   Status process(const DopplerProcessor<Caps>& dp) {
     if (!initialized_) return Status::kNotInitialized;
     // Blocks of kBlock range bins, one transform per lane (dsp::FftBatch:
-    // each lane gets the bits of Fft<kNa>::forward() on its cell), Doppler
-    // outside. Output row k of a block is the kBlock adjacent range bins of
-    // map line (d, a = (k + N_A/2) mod N_A): one 64-byte store run, where
-    // one transform per cell scattered down a column at stride
-    // kNumRangeBins. Every cell's operations are unchanged.
-    for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
-      const std::size_t lanes = kNumRangeBins - g0 < kBlock ? kNumRangeBins - g0 : kBlock;
-      for (std::size_t d = 0; d < kNc; ++d) {
+    // each lane gets the bits of Fft<kNa>::forward() on its cell). Input
+    // row v of a block is a 64-byte run of the Doppler stage's row (v, d)
+    // and output row k the kBlock adjacent range bins of map line
+    // (d, a = (k + N_A/2) mod N_A): one 64-byte store run, where one
+    // transform per cell scattered down a column at stride kNumRangeBins.
+    // Doppler outside, so both sides stream through their rows in order.
+    // Every cell's operations are unchanged.
+    for (std::size_t d = 0; d < kNc; ++d) {
+      for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
+        const std::size_t lanes = kNumRangeBins - g0 < kBlock ? kNumRangeBins - g0 : kBlock;
         load_block(dp, g0, lanes, d);
         batch_.forward();
         store_powers(g0, lanes, d);
@@ -123,8 +125,17 @@ class AngleProcessor {
   /// Refines the angle of the snapshot (g, d) around grid bin a.
   AngleEstimate refine(const DopplerProcessor<Caps>& dp, std::size_t g, std::size_t d,
                        std::size_t a) const {
-    const float* xr = dp.snapshot_re(g, d);
-    const float* xi = dp.snapshot_im(g, d);
+    std::array<float, kNumVirtual> xr{};  // the snapshot, gathered from the channel rows
+    std::array<float, kNumVirtual> xi{};
+    for (std::size_t v = 0; v < kNumVirtual; ++v) {
+      xr[v] = dp.snapshot_re(g, d, v);
+      xi[v] = dp.snapshot_im(g, d, v);
+    }
+    return refine_snapshot(xr.data(), xi.data(), a);
+  }
+
+  /// refine() on a snapshot given as kNumVirtual planar values.
+  AngleEstimate refine_snapshot(const float* xr, const float* xi, std::size_t a) const {
     AngleEstimate best;
     best.u = static_cast<float>(bin_u(a));
     best.power = steering_power(xr, xi, best.u);
@@ -180,26 +191,30 @@ class AngleProcessor {
 
  private:
   // Lane l of the batch = range bin g0 + l: the windowed snapshot of cell
-  // (g0 + l, d), zero-padded to N_A. Lanes past the last range bin (a
+  // (g0 + l, d), zero-padded to N_A. Input row v is the run g0..g0+lanes of
+  // the Doppler stage's row (v, d). Lanes past the last range bin (a
   // partial last block) hold zeros, so they never grow or go NaN.
   void load_block(const DopplerProcessor<Caps>& dp, std::size_t g0, std::size_t lanes,
                   std::size_t d) {
-    // Channel outer: each input row is written as one run; the lanes'
-    // snapshots (kNumVirtual floats each) stay in L1 across v.
     for (std::size_t v = 0; v < kNumVirtual; ++v) {
+      const float w = window_[v];
+      if (lanes == kBlock) {
+        scale_row(dp.row_re(v, d) + g0, w, batch_.input_re(v));
+        scale_row(dp.row_im(v, d) + g0, w, batch_.input_im(v));
+        continue;
+      }
       float* yr = batch_.input_re(v);
       float* yi = batch_.input_im(v);
-      const float w = window_[v];
-      for (std::size_t l = 0; l < lanes; ++l) {
-        yr[l] = dp.snapshot_re(g0 + l, d)[v] * w;
-        yi[l] = dp.snapshot_im(g0 + l, d)[v] * w;
-      }
-      for (std::size_t l = lanes; l < kBlock; ++l) {
-        yr[l] = 0.0f;
-        yi[l] = 0.0f;
+      for (std::size_t l = 0; l < kBlock; ++l) {
+        yr[l] = l < lanes ? dp.row_re(v, d)[g0 + l] * w : 0.0f;
+        yi[l] = l < lanes ? dp.row_im(v, d)[g0 + l] * w : 0.0f;
       }
     }
     for (std::size_t v = kNumVirtual; v < kNa; ++v) batch_.zero_input(v);
+  }
+
+  static void scale_row(const float* __restrict x, float w, float* __restrict y) {
+    for (std::size_t l = 0; l < kBlock; ++l) y[l] = x[l] * w;
   }
 
   // The no-alias facts as __restrict parameters, so GCC emits a vector loop

@@ -49,6 +49,7 @@
 
 #include "mptrack/dsp/fft_config.h"
 #include "mptrack/frontend/cfar.h"
+#include "mptrack/frontend/cfar_shift_edges_avx512.h"
 
 namespace mptrack::frontend {
 
@@ -85,27 +86,41 @@ class CfarScreen {
 #else
     static_cast<void>(copy);
 #endif
-    return screen(cfar, line, lo, hi);
+    return screen<dsp::FftCopy::kBaseline>(cfar, line, lo, hi);
   }
 
   std::size_t size() const { return count_; }
   const std::uint16_t* cells() const { return cells_.data(); }
+
+  /// Tests only: true routes CA and GO under kShift through the planned
+  /// segment tables too, instead of their closed-form edge sums.
+  void set_planned_edges_only(bool on) { planned_only_ = on; }
 
  private:
 #if MPTRACK_FFT_X86_DISPATCH
   __attribute__((target("avx2"), noinline)) std::size_t run_avx2(const Cfar& cfar,
                                                                  const float* line, std::size_t lo,
                                                                  std::size_t hi) {
-    return screen(cfar, line, lo, hi);
+    return screen<dsp::FftCopy::kAvx2>(cfar, line, lo, hi);
   }
   __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) std::size_t
   run_avx512(const Cfar& cfar, const float* line, std::size_t lo, std::size_t hi) {
-    return screen(cfar, line, lo, hi);
+    const std::size_t n = screen<dsp::FftCopy::kAvx512>(cfar, line, lo, hi);
+    if (!shift_pending_) return n;
+    // The closed-form kShift edges, here where the AVX-512 target applies
+    // (cfar_shift_edges_avx512.h), then the collection screen() left.
+    shift_pending_ = false;
+    const cfar_detail::ShiftEdgeGeometry geo{prefix_.data(), kLen, shift_guard_, shift_train_};
+    cfar_detail::shift_lower_edge_avx512(geo, line, flags_.data(), lo, shift_lo_end_, shift_k_);
+    cfar_detail::shift_upper_edge_avx512(geo, line, flags_.data(), shift_hi_begin_, hi, shift_k_);
+    collect(lo, hi);
+    return count_;
   }
 #endif
 
   // The screen itself; every helper is force-inlined (MPTRACK_FFT_INLINE), so
   // each copy compiles all of it for its own ISA.
+  template <dsp::FftCopy kCopy>
   MPTRACK_FFT_INLINE std::size_t screen(const Cfar& cfar, const float* line, std::size_t lo,
                                         std::size_t hi) {
     count_ = 0;
@@ -162,6 +177,20 @@ class CfarScreen {
     if (p.edge == CfarEdge::kSkip) {  // untested, never detected
       for (std::size_t i = lo; i < edge_lo_end; ++i) flags_[i] = 0;
       for (std::size_t i = edge_hi_begin; i < hi; ++i) flags_[i] = 0;
+    } else if (p.edge == CfarEdge::kShift && !so && !planned_only_) {
+#if MPTRACK_FFT_X86_DISPATCH
+      if constexpr (kCopy == dsp::FftCopy::kAvx512) {  // finished by run_avx512
+        shift_pending_ = true;
+        shift_lo_end_ = edge_lo_end;
+        shift_hi_begin_ = edge_hi_begin;
+        shift_k_ = k;
+        shift_guard_ = p.guard_cells;
+        shift_train_ = p.training_cells;
+        return 0;
+      }
+#endif
+      shift_lower_edge(line, lo, edge_lo_end, k, p.guard_cells, p.training_cells);
+      shift_upper_edge(line, edge_hi_begin, hi, k, p.guard_cells, p.training_cells);
     } else {
       plan_edges(p);
       edges(line, lo, edge_lo_end, k, p.edge == CfarEdge::kWrap, so);
@@ -291,6 +320,48 @@ class CfarScreen {
       const std::uint32_t wr = box[i + g + 1];  // cells (i + G, i + G + T]
       std::uint32_t w = wl + wr;
       if constexpr (kSo) w = wl < wr ? wl : wr;
+      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+    }
+  }
+
+  // kShift, CA and GO: the whole window of an edge cell in closed form on
+  // prefix_ (P[x] = q_0 + ... + q_{x-1} over the lower region, E = 2(G + T)
+  // + 1), the same integers as its planned segments but with contiguous
+  // loads, so the loops vectorise (the table loop was a scalar gather,
+  // ~28 % of a 128-cell line's screen; bench/README.md session 15).
+  // Lower edge, cell i < G + T: the window is [0, h) and (i + G, i + G + 2T - h],
+  // h = max(0, i - G) < T cells on the left.
+  MPTRACK_FFT_INLINE void shift_lower_edge(const float* line, std::size_t from, std::size_t to, float k,
+                                           std::size_t g, std::size_t t) {
+    const std::uint32_t* q = prefix_.data();
+    const std::size_t e = 2 * (g + t) + 1;
+    const std::size_t mid = to < g + 1 ? to : g + 1;  // cells i <= G: h = 0
+    for (std::size_t i = from; i < mid; ++i) {
+      const std::uint32_t w = q[i + g + 1 + 2 * t] - q[i + g + 1];
+      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+    }
+    for (std::size_t i = from > mid ? from : mid; i < to; ++i) {  // h = i - G
+      const std::uint32_t w = q[i - g] + q[e] - q[i + g + 1];
+      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+    }
+  }
+
+  // Upper edge, cell i >= kLen - G - T: the window is [i - G - 2T + h, i - G)
+  // and (i + G, kLen), h = kLen - (i + G + 1) < T cells on the right (0 once
+  // i + G + 1 >= kLen). Differences of prefix_ within the upper region (it
+  // starts from 0 at cell kLen - E; one running sum where the regions meet).
+  MPTRACK_FFT_INLINE void shift_upper_edge(const float* line, std::size_t from, std::size_t to, float k,
+                                           std::size_t g, std::size_t t) {
+    const std::uint32_t* q = prefix_.data();
+    const std::size_t base = kLen - (2 * (g + t) + 1);  // = i - G - 2T + h while h > 0
+    const std::size_t split = kLen - g - 1;             // first cell with h = 0
+    const std::size_t mid = to < split ? to : split;
+    for (std::size_t i = from; i < mid; ++i) {
+      const std::uint32_t w = (q[i - g] - q[base]) + (q[kLen] - q[i + g + 1]);
+      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+    }
+    for (std::size_t i = from > mid ? from : mid; i < to; ++i) {
+      const std::uint32_t w = q[i - g] - q[i - g - 2 * t];
       flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
     }
   }
@@ -469,6 +540,14 @@ class CfarScreen {
   std::size_t plan_training_ = 0;
   CfarEdge plan_edge_ = CfarEdge::kShift;
   bool planned_ = false;
+  bool planned_only_ = false;  ///< set_planned_edges_only()
+  // AVX-512 copy: kShift edges screen() left to run_avx512 (it returns 0 then).
+  bool shift_pending_ = false;
+  std::size_t shift_lo_end_ = 0;
+  std::size_t shift_hi_begin_ = 0;
+  std::size_t shift_guard_ = 0;
+  std::size_t shift_train_ = 0;
+  float shift_k_ = 0.0f;
   std::size_t count_ = 0;
 };
 

@@ -17,19 +17,19 @@
 // With kNumChirps == 1 (seed 004) there is no FFT and no window: the stage
 // only transposes, and d = 0 is the single Doppler bin (v_r = 0).
 //
-// Output layout (what the angle stage consumes): snapshot of cell (g, d) is
-// kNumVirtual contiguous complex values, planar:
-//   index ((g * kNumChirps) + d) * kNumVirtual + v.
+// Output layout (what the angle stage consumes): for each channel v and
+// Doppler index d, the kNumRangeBins values of every range bin, contiguous
+// ("rows", planar): index (v * kNumChirps + d) * kNumRangeBins + g.
 //
-// Batches (docs/algorithms/frontend.md §FFT): the kNumVirtual transforms of
-// one range bin run together in an FftBatch, lane = channel. The range
-// stage's [g][c][v] rows are the batch's input rows (one contiguous run per
-// chirp) and each output row k is the snapshot run of cell (g, d(k)): no
-// scatter on either side. Every lane gets the bits of Fft<N_c>::forward().
-// The lanes are padded to a multiple of 8 (12 channels: 16 lanes), so every
-// butterfly is whole 8- or 16-float vectors; the pad lanes hold zeros and are
-// never read (measured, frontend/large: Doppler stage 0.52 -> 0.43 of the
-// angle stage's time with padded lanes, against 0.50 unpadded; bench/README.md).
+// Batches (docs/algorithms/frontend.md §FFT): the transforms of 16 adjacent
+// range bins of one channel run together in an FftBatch, lane = range bin.
+// Input row c is 16 adjacent bins of the range stage's profile (c, v) (one
+// 64-byte run) times w[c]; output row k is the same 16 bins of snapshot row
+// (v, d(k)). No transposes on either side, and every lane does useful work
+// (the earlier lane = channel batch padded 12 channels to 16 lanes). Every
+// lane gets the bits of Fft<N_c>::forward(). The front end calls
+// process_channel() right after the range stage has compressed that
+// channel, so its 2 x N_c profiles are read from cache.
 #pragma once
 
 #include <array>
@@ -79,6 +79,13 @@ class DopplerProcessor {
     return process_copy(dsp::widest_fft_copy(), rmf);
   }
 
+  /// The snapshot rows of channel v alone (the front end interleaves this
+  /// with the range stage, channel by channel). kInvalidArgument for v out
+  /// of range.
+  Status process_channel(const RangeMatchedFilter<Caps>& rmf, std::size_t v) {
+    return process_channel_copy(dsp::widest_fft_copy(), rmf, v);
+  }
+
   /// process() compiled for one ISA (the FFT's copies, dsp/fft_config.h;
   /// never FMA): the window products and the fftshift row moves run as wide
   /// as the batch FFT does. Each element sees the same operation in every
@@ -86,27 +93,38 @@ class DopplerProcessor {
   /// this build or CPU lacks falls back to the baseline.
   Status process_copy(dsp::FftCopy copy, const RangeMatchedFilter<Caps>& rmf) {
     if (!initialized_) return Status::kNotInitialized;
+    for (std::size_t v = 0; v < kNumVirtual; ++v) static_cast<void>(process_channel_copy(copy, rmf, v));
+    return Status::kOk;
+  }
+
+  /// process_channel() compiled for one ISA (as process_copy()).
+  Status process_channel_copy(dsp::FftCopy copy, const RangeMatchedFilter<Caps>& rmf, std::size_t v) {
+    if (!initialized_) return Status::kNotInitialized;
+    if (v >= kNumVirtual) return Status::kInvalidArgument;
 #if MPTRACK_FFT_X86_DISPATCH
     if (copy == dsp::FftCopy::kAvx512 && dsp::fft_copy_available(copy)) {
-      process_avx512(rmf);
+      process_avx512(rmf, v);
     } else if (copy == dsp::FftCopy::kAvx2 && dsp::fft_copy_available(copy)) {
-      process_avx2(rmf);
+      process_avx2(rmf, v);
     } else {
-      process_bins(rmf);
+      process_blocks(rmf, v);
     }
 #else
     static_cast<void>(copy);
-    process_bins(rmf);
+    process_blocks(rmf, v);
 #endif
     return Status::kOk;
   }
 
-  /// Planar snapshot (kNumVirtual values) of range bin g, Doppler index d.
-  const float* snapshot_re(std::size_t g, std::size_t d) const {
-    return &snap_re_[(g * kNc + d) * kNumVirtual];
-  }
-  const float* snapshot_im(std::size_t g, std::size_t d) const {
-    return &snap_im_[(g * kNc + d) * kNumVirtual];
+  /// Snapshot value of channel v at range bin g, Doppler index d.
+  float snapshot_re(std::size_t g, std::size_t d, std::size_t v) const { return snap_re_[index(v, d, g)]; }
+  float snapshot_im(std::size_t g, std::size_t d, std::size_t v) const { return snap_im_[index(v, d, g)]; }
+  /// Row (v, d): the kNumRangeBins values of channel v at Doppler index d,
+  /// contiguous in g (the angle stage's input rows).
+  const float* row_re(std::size_t v, std::size_t d) const { return &snap_re_[index(v, d, 0)]; }
+  const float* row_im(std::size_t v, std::size_t d) const { return &snap_im_[index(v, d, 0)]; }
+  static constexpr std::size_t index(std::size_t v, std::size_t d, std::size_t g) {
+    return (v * kNc + d) * kNumRangeBins + g;
   }
 
   /// Radial velocity of (possibly fractional) Doppler index d [m/s], positive receding.
@@ -130,65 +148,87 @@ class DopplerProcessor {
 
  private:
 #if MPTRACK_FFT_X86_DISPATCH
-  __attribute__((target("avx2"), noinline)) void process_avx2(const RangeMatchedFilter<Caps>& rmf) {
-    process_bins(rmf);
+  __attribute__((target("avx2"), noinline)) void process_avx2(const RangeMatchedFilter<Caps>& rmf,
+                                                              std::size_t v) {
+    process_blocks(rmf, v);
   }
   __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) void process_avx512(
-      const RangeMatchedFilter<Caps>& rmf) {
-    process_bins(rmf);
+      const RangeMatchedFilter<Caps>& rmf, std::size_t v) {
+    process_blocks(rmf, v);
   }
 #endif
 
+  /// Range bins per batch (16 floats: one 64-byte line per row).
+  static constexpr std::size_t kBlock = 16;
+  using Batch = dsp::FftBatch<(kNc > 1 ? kNc : 2), kBlock>;
+
   // Every helper is force-inlined (MPTRACK_FFT_INLINE), so each copy
   // compiles all of it.
-  MPTRACK_FFT_INLINE void process_bins(const RangeMatchedFilter<Caps>& rmf) {
-    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-      if constexpr (kHasDoppler) {
-        transform(rmf.bin_re(g), rmf.bin_im(g), g);
-      } else {  // one chirp: bin g's row is the snapshot of cell (g, 0)
-        for (std::size_t v = 0; v < kNumVirtual; ++v) {
-          snap_re_[g * kNumVirtual + v] = rmf.bin_re(g)[v];
-          snap_im_[g * kNumVirtual + v] = rmf.bin_im(g)[v];
+  MPTRACK_FFT_INLINE void process_blocks(const RangeMatchedFilter<Caps>& rmf, std::size_t v) {
+    if constexpr (kHasDoppler) {
+      for (std::size_t g0 = 0; g0 < kNumRangeBins; g0 += kBlock) {
+        const std::size_t lanes = kNumRangeBins - g0 < kBlock ? kNumRangeBins - g0 : kBlock;
+        transform(rmf, v, g0, lanes);
+      }
+    } else {  // one chirp: profile (0, v) is snapshot row (v, 0)
+      const float* pr = rmf.profile_re(0, v);
+      const float* pi = rmf.profile_im(0, v);
+      for (std::size_t g = 0; g < kNumRangeBins; ++g) {
+        snap_re_[index(v, 0, g)] = pr[g];
+        snap_im_[index(v, 0, g)] = pi[g];
+      }
+    }
+  }
+
+  // Slow-time FFTs of range bins g0..g0+lanes of channel v: windowed rows
+  // w[c] r_c (lanes past the last bin of a partial block hold zeros), one
+  // batch, and the fftshift d = (k + kNc/2) mod kNc, whole rows. The real
+  // and the imaginary rows are scaled in separate loops: interleaved in one
+  // loop, GCC 12 built each row from scalar loads and inserts.
+  MPTRACK_FFT_INLINE void transform(const RangeMatchedFilter<Caps>& rmf, std::size_t v, std::size_t g0,
+                                    std::size_t lanes) {
+    if (lanes == kBlock) {
+      for (std::size_t c = 0; c < kNc; ++c) scale_row(rmf.profile_re(c, v) + g0, window_[c], batch_.input_re(c));
+      for (std::size_t c = 0; c < kNc; ++c) scale_row(rmf.profile_im(c, v) + g0, window_[c], batch_.input_im(c));
+    } else {
+      for (std::size_t c = 0; c < kNc; ++c) {
+        float* yr = batch_.input_re(c);
+        float* yi = batch_.input_im(c);
+        for (std::size_t l = 0; l < kBlock; ++l) {
+          yr[l] = l < lanes ? rmf.profile_re(c, v)[g0 + l] * window_[c] : 0.0f;
+          yi[l] = l < lanes ? rmf.profile_im(c, v)[g0 + l] * window_[c] : 0.0f;
+        }
+      }
+    }
+    batch_.forward();
+    constexpr std::size_t kHalf = kNc / 2;
+    for (std::size_t k = 0; k < kNc; ++k) {
+      const std::size_t d = k < kHalf ? k + kHalf : k - kHalf;
+      float* sr = &snap_re_[index(v, d, g0)];
+      float* si = &snap_im_[index(v, d, g0)];
+      if (lanes == kBlock) {
+        copy_row(batch_.output_re(k), sr);
+        copy_row(batch_.output_im(k), si);
+      } else {
+        for (std::size_t l = 0; l < lanes; ++l) {
+          sr[l] = batch_.output_re(k)[l];
+          si[l] = batch_.output_im(k)[l];
         }
       }
     }
   }
 
-  // Lanes rounded up to a multiple of 8 (header); the extra lanes stay zero.
-  static constexpr std::size_t kLanes = (kNumVirtual + 7) / 8 * 8;
-  using Batch = dsp::FftBatch<(kNc > 1 ? kNc : 2), kLanes>;
-
-  // Slow-time FFTs of range bin g (pr, pi: chirp c, channel v at
-  // c * kNumVirtual + v): windowed rows w[c] x, one batch, and the fftshift
-  // d = (k + kNc/2) mod kNc, whole rows. The real rows and the imaginary
-  // rows are scaled in separate loops: interleaved in one loop, GCC 12
-  // built each 12-value row from scalar loads and inserts (2 floats at a
-  // time) instead of one 8- and one 4-wide load (bench/README.md session 15).
-  MPTRACK_FFT_INLINE void transform(const float* pr, const float* pi, std::size_t g) {
-    for (std::size_t c = 0; c < kNc; ++c) scale_row(pr + c * kNumVirtual, window_[c], batch_.input_re(c));
-    for (std::size_t c = 0; c < kNc; ++c) scale_row(pi + c * kNumVirtual, window_[c], batch_.input_im(c));
-    batch_.forward();
-    float* sr = snap_re_.data() + g * kNc * kNumVirtual;
-    float* si = snap_im_.data() + g * kNc * kNumVirtual;
-    constexpr std::size_t kHalf = kNc / 2;
-    for (std::size_t k = 0; k < kNc; ++k) {
-      const std::size_t d = k < kHalf ? k + kHalf : k - kHalf;
-      copy_row(batch_.output_re(k), sr + d * kNumVirtual);
-      copy_row(batch_.output_im(k), si + d * kNumVirtual);
-    }
-  }
-
   MPTRACK_FFT_INLINE static void scale_row(const float* __restrict x, float w, float* __restrict y) {
-    for (std::size_t v = 0; v < kNumVirtual; ++v) y[v] = x[v] * w;
+    for (std::size_t l = 0; l < kBlock; ++l) y[l] = x[l] * w;
   }
   MPTRACK_FFT_INLINE static void copy_row(const float* __restrict x, float* __restrict y) {
-    for (std::size_t v = 0; v < kNumVirtual; ++v) y[v] = x[v];
+    for (std::size_t l = 0; l < kBlock; ++l) y[l] = x[l];
   }
 
   Batch batch_{};
   std::array<float, kNc> window_{};
-  std::array<float, kNumCells * kNumVirtual> snap_re_{};
-  std::array<float, kNumCells * kNumVirtual> snap_im_{};
+  alignas(64) std::array<float, kNumCells * kNumVirtual> snap_re_{};
+  alignas(64) std::array<float, kNumCells * kNumVirtual> snap_im_{};
   double velocity_per_bin_mps_ = 0.0;
   bool initialized_ = false;
 };

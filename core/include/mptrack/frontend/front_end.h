@@ -90,6 +90,7 @@ class FrontEnd {
   static constexpr std::size_t kNc = Caps::kNumChirps;
   static constexpr std::size_t kNa = Caps::kNumAngleBins;
   static constexpr std::size_t kNumRangeBins = Caps::kNumRangeBins;
+  static constexpr std::size_t kNumVirtual = Caps::kNumTx * Caps::kNumRx;
 
   /// Checks every field (FrontEndParams::validate) and the fit to the
   /// radar caps: max_detections, the chirp within the range FFT, the CFAR
@@ -158,14 +159,34 @@ class FrontEnd {
       return Status::kNotInitialized;
     }
     MPTRACK_PROFILE_STEP(g_frontend);
-    MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kRange);
+    // Range and Doppler run channel by channel (docs/algorithms/frontend.md
+    // §Stage layouts): the Doppler stage reads a channel's profiles right
+    // after the range stage wrote them, from cache. Each stage's time is the
+    // sum over the channels.
     // The frame checks (docs/algorithms/frontend.md §Frame input and checks)
-    // are tallied by the range stage as it reads the cube, and decided here
-    // in the same order as one check pass before it would: a sample beyond
-    // the ceiling (+-Inf included), then an all-zero frame, then NaN.
-    std::uint32_t t0 = tick(times);
-    const Status s = rmf_.process(cube);
-    std::uint32_t t1 = tick(times);
+    // are tallied by the range stage as it reads the cube, and decided after
+    // the last channel in the same order as one check pass before it would:
+    // a sample beyond the ceiling (+-Inf included), then an all-zero frame,
+    // then NaN. A refused frame's snapshots are never used.
+    rmf_.begin_frame();
+    Status s = Status::kOk;
+    std::uint32_t range_ticks = 0;
+    std::uint32_t doppler_ticks = 0;
+    for (std::size_t v = 0; v < kNumVirtual; ++v) {
+      const std::uint32_t a = tick(times);
+      {
+        MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kRange);
+        s = rmf_.process_channel(cube, v);
+      }
+      const std::uint32_t b = tick(times);
+      {
+        MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kDoppler);
+        MPTRACK_TRY(dop_.process_channel(rmf_, v));
+      }
+      const std::uint32_t c = tick(times);
+      range_ticks += b - a;  // wraps correctly
+      doppler_ticks += c - b;
+    }
     const FrameTally& ft = rmf_.tally();
     if (ft.over_ceiling > 0 || ft.zero == cube.iq.size() || s != Status::kOk) {
       ++counters_.frames_rejected;
@@ -178,14 +199,12 @@ class FrontEnd {
     }
     const bool saturated = ft.full_scale > saturated_limit_;
     if (saturated) ++counters_.frames_saturated;
-    stamp(times, FrontEndStage::kRange, t0, t1);
-    MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kDoppler);
-    MPTRACK_TRY(dop_.process(rmf_));
-    t0 = tick(times);
-    stamp(times, FrontEndStage::kDoppler, t1, t0);
+    stamp(times, FrontEndStage::kRange, 0u, range_ticks);
+    stamp(times, FrontEndStage::kDoppler, 0u, doppler_ticks);
+    std::uint32_t t0 = tick(times);
     MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kAngle);
     MPTRACK_TRY(ang_.process(dop_));
-    t1 = tick(times);
+    std::uint32_t t1 = tick(times);
     stamp(times, FrontEndStage::kAngle, t0, t1);
     MPTRACK_PROFILE_STAGE(g_frontend, FrontEndStage::kCfar);
     detect(N);

@@ -26,7 +26,6 @@
 
 #include "mptrack/dsp/fft.h"
 #include "mptrack/dsp/fft_config.h"
-#include "mptrack/dsp/transpose_rows.h"
 #include "mptrack/frontend/frontend_params.h"
 #include "mptrack/frontend/prefetch.h"
 #include "mptrack/frontend/radar_cube.h"
@@ -127,22 +126,49 @@ class RangeMatchedFilter {
   template <class Sample>
   Status process_copy(dsp::FftCopy copy, const RadarCubeT<Caps, Sample>& cube) {
     if (!initialized_) return Status::kNotInitialized;
+    begin_frame();
+    for (std::size_t v = 0; v < kNumVirtual; ++v) static_cast<void>(process_channel_copy(copy, cube, v));
+    return tally_.nonfinite > 0 ? Status::kInvalidInput : Status::kOk;
+  }
+
+  /// Starts a frame processed channel by channel (process_channel()):
+  /// clears the tallies.
+  void begin_frame() { tally_ = FrameTally{}; }
+
+  /// Compresses every chirp of virtual channel v (the rows [v][c][g]) and
+  /// adds its samples to tally(). The front end runs the Doppler stage on
+  /// the channel right after it, while its rows are still in cache
+  /// (docs/algorithms/frontend.md §Range matched filter). kNotInitialized
+  /// before init(), kInvalidArgument for v out of range, kInvalidInput if a
+  /// sample of the frame so far is NaN/Inf (those profiles are not
+  /// compressed). Runs the widest copy this CPU has.
+  template <class Sample>
+  Status process_channel(const RadarCubeT<Caps, Sample>& cube, std::size_t v) {
+    return process_channel_copy(dsp::widest_fft_copy(), cube, v);
+  }
+
+  /// process_channel() compiled for one ISA (as process_copy()).
+  template <class Sample>
+  Status process_channel_copy(dsp::FftCopy copy, const RadarCubeT<Caps, Sample>& cube, std::size_t v) {
+    if (!initialized_) return Status::kNotInitialized;
+    if (v >= kNumVirtual) return Status::kInvalidArgument;
 #if MPTRACK_FFT_X86_DISPATCH
     if (copy == dsp::FftCopy::kAvx512 && dsp::fft_copy_available(copy)) {
-      process_avx512(cube);
+      process_avx512(cube, v);
     } else if (copy == dsp::FftCopy::kAvx2 && dsp::fft_copy_available(copy)) {
-      process_avx2(cube);
+      process_avx2(cube, v);
     } else {
-      process_frame<dsp::FftCopy::kBaseline>(cube);
+      process_chirps(cube, v);
     }
 #else
     static_cast<void>(copy);
-    process_frame<dsp::FftCopy::kBaseline>(cube);
+    process_chirps(cube, v);
 #endif
     return tally_.nonfinite > 0 ? Status::kInvalidInput : Status::kOk;
   }
 
-  /// Sample tallies of the last process() (all zero before the first).
+  /// Sample tallies of the frame since begin_frame() (or of the last
+  /// process(); all zero before the first).
   const FrameTally& tally() const { return tally_; }
 
   /// Compresses one profile given as planar float samples (kNumSamples
@@ -158,7 +184,6 @@ class RangeMatchedFilter {
     zero_tail();
     if (remove_dc_) subtract_mean();
     compress(profile / kNumVirtual, profile % kNumVirtual);
-    if constexpr (kStaged) store_row(profile / kNumVirtual, profile % kNumVirtual);
     return Status::kOk;
   }
 
@@ -178,29 +203,20 @@ class RangeMatchedFilter {
   /// Range profile of (chirp c, virtual channel v) at range bin g.
   float value_re(std::size_t c, std::size_t v, std::size_t g) const { return out_re_[index(c, v, g)]; }
   float value_im(std::size_t c, std::size_t v, std::size_t g) const { return out_im_[index(c, v, g)]; }
-  /// The kNumChirps x kNumVirtual values of range bin g, planar: (c, v) at
-  /// c * kNumVirtual + v (what the Doppler stage transforms, a batch per bin).
-  const float* bin_re(std::size_t g) const { return &out_re_[index(0, 0, g)]; }
-  const float* bin_im(std::size_t g) const { return &out_im_[index(0, 0, g)]; }
-  /// Floats between adjacent range bins: kNumChirps x kNumVirtual plus one
-  /// 64-byte line when there is a Doppler axis. Without the pad the stores
-  /// of one profile (stride 6 KiB at 128 chirps x 12 channels) would map to
-  /// two groups of L1 sets only and evict each other before the chirp's
-  /// other channels complete their lines (the pad of the earlier [v][g][c]
-  /// layout was measured: 1.32 against 0.95-1.0 ms).
-  static constexpr std::size_t kBinStride =
-      Caps::kNumChirps * kNumVirtual + (Caps::kNumChirps > 1 ? 16 : 0);
-  /// With a Doppler axis a profile's kNumRangeBins values lie kBinStride
-  /// apart in the output (6 KiB at 128 chirps x 12 channels): one scalar
-  /// store per value. Staged, each profile is written in order into a
-  /// [v][g] row of the chirp's staging buffer and the chirp then moves to the
-  /// output as runs of kNumVirtual values (store_chirp). Single-chirp
-  /// radars write their nearly contiguous output directly.
-  static constexpr bool kStaged = Caps::kNumChirps > 1;
-  /// Output layout [g][c][v]: the channels of one (bin, chirp) contiguous,
-  /// one input row of the Doppler stage's batch.
+  /// The kNumRangeBins values of profile (c, v), contiguous (what the
+  /// Doppler stage reads, 16 bins of every chirp at a time).
+  const float* profile_re(std::size_t c, std::size_t v) const { return &out_re_[index(c, v, 0)]; }
+  const float* profile_im(std::size_t c, std::size_t v) const { return &out_im_[index(c, v, 0)]; }
+  /// Floats between adjacent profiles of one channel: kNumRangeBins plus one
+  /// 64-byte line when there is a Doppler axis. The Doppler stage reads one
+  /// line of every chirp's profile per block; at a stride of a whole number
+  /// of 512-byte units those 2 x kNumChirps lines would share an eighth of the
+  /// L1 sets and evict each other.
+  static constexpr std::size_t kProfileStride = kNumRangeBins + (Caps::kNumChirps > 1 ? 16 : 0);
+  /// Output layout [v][c][g]: one channel's profiles together (the unit the
+  /// front end hands to the Doppler stage), each profile's bins contiguous.
   static constexpr std::size_t index(std::size_t c, std::size_t v, std::size_t g) {
-    return g * kBinStride + c * kNumVirtual + v;
+    return (v * Caps::kNumChirps + c) * kProfileStride + g;
   }
 
   std::size_t chirp_len() const { return chirp_len_; }
@@ -213,38 +229,32 @@ class RangeMatchedFilter {
  private:
 #if MPTRACK_FFT_X86_DISPATCH
   template <class Sample>
-  __attribute__((target("avx2"), noinline)) void process_avx2(const RadarCubeT<Caps, Sample>& cube) {
-    process_frame<dsp::FftCopy::kAvx2>(cube);
+  __attribute__((target("avx2"), noinline)) void process_avx2(const RadarCubeT<Caps, Sample>& cube,
+                                                              std::size_t v) {
+    process_chirps(cube, v);
   }
   template <class Sample>
   __attribute__((target("avx512f,avx512vl,prefer-vector-width=512"), noinline)) void process_avx512(
-      const RadarCubeT<Caps, Sample>& cube) {
-    process_frame<dsp::FftCopy::kAvx512>(cube);
+      const RadarCubeT<Caps, Sample>& cube, std::size_t v) {
+    process_chirps(cube, v);
   }
 #endif
 
-  // Chirp outer, channel inner: the chirp's profiles are adjacent in the
-  // cube (read as one stream, once: the frame checks are tallied on the
-  // way), and its kNumRangeBins output runs of kNumVirtual values are
-  // written together (store_chirp). The profile one chirp ahead is
-  // prefetched (prefetch.h; measured under memory contention, bench/README.md
-  // session 15). Every helper is force-inlined (MPTRACK_FFT_INLINE), so each
-  // copy compiles all of it.
-  template <dsp::FftCopy kCopy, class Sample>
-  MPTRACK_FFT_INLINE void process_frame(const RadarCubeT<Caps, Sample>& cube) {
-    tally_ = FrameTally{};
+  // The chirps of channel v in order: in the cube its profiles are runs of
+  // kNumSamples complex values, one per chirp, kNumVirtual profiles apart,
+  // so the next chirp's run is prefetched during this one's FFTs (the
+  // hardware prefetchers do not follow jumps of that size: prefetch.h).
+  // The frame checks are tallied on the way (each sample is read once).
+  // Every helper is force-inlined (MPTRACK_FFT_INLINE), so each copy
+  // compiles all of it.
+  template <class Sample>
+  MPTRACK_FFT_INLINE void process_chirps(const RadarCubeT<Caps, Sample>& cube, std::size_t v) {
     constexpr std::size_t kProfile = 2 * Caps::kNumSamples;  // Sample values
-    constexpr std::size_t kAhead = kNumVirtual;              // profiles: one chirp
-    for (std::size_t c = 0; c < Caps::kNumChirps; ++c) {
-      for (std::size_t v = 0; v < kNumVirtual; ++v) {
-        const Sample* src = cube.iq.data() + RadarCubeT<Caps, Sample>::offset(c, 0, 0, 0) +
-                            v * kProfile;
-        if (c * kNumVirtual + v + kAhead < kNumProfiles) {
-          prefetch_read(src + kAhead * kProfile, kProfile * sizeof(Sample));
-        }
-        if (load(src)) compress(c, v);
-      }
-      if constexpr (kStaged) store_chirp<kCopy>(c);
+    const Sample* src = cube.iq.data() + RadarCubeT<Caps, Sample>::offset(0, 0, 0, 0) + v * kProfile;
+    constexpr std::size_t kChirpStride = kNumVirtual * kProfile;
+    for (std::size_t c = 0; c < Caps::kNumChirps; ++c, src += kChirpStride) {
+      if (c + 1 < Caps::kNumChirps) prefetch_read(src + kChirpStride, kProfile * sizeof(Sample));
+      if (load(src)) compress(c, v);
     }
   }
 
@@ -330,9 +340,8 @@ class RangeMatchedFilter {
   }
 
   // Pulse compression of the profile in buf_, then the calibration multiply
-  // (with c_v = 1 it reproduces the input bits) into the output: into the
-  // chirp's staging row v when staged (store_chirp() then moves whole rows),
-  // else straight into the [g][c][v] output at stride kBinStride.
+  // (with c_v = 1 it reproduces the input bits) into the profile's
+  // contiguous output run.
   MPTRACK_FFT_INLINE void compress(std::size_t c, std::size_t v) {
     fft_.forward(buf_re_.data(), buf_im_.data());
     for (std::size_t k = 0; k < kM; ++k) {
@@ -344,39 +353,11 @@ class RangeMatchedFilter {
     fft_.inverse(buf_re_.data(), buf_im_.data());
     const float cr = cal_re_[v];
     const float ci = cal_im_[v];
-    float* dst_re = kStaged ? &stage_re_[v * kNumRangeBins] : &out_re_[index(c, v, 0)];
-    float* dst_im = kStaged ? &stage_im_[v * kNumRangeBins] : &out_im_[index(c, v, 0)];
-    constexpr std::size_t kStride = kStaged ? 1 : kBinStride;
+    float* __restrict dst_re = &out_re_[index(c, v, 0)];
+    float* __restrict dst_im = &out_im_[index(c, v, 0)];
     for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-      dst_re[g * kStride] = buf_re_[g] * cr - buf_im_[g] * ci;
-      dst_im[g * kStride] = buf_im_[g] * cr + buf_re_[g] * ci;
-    }
-  }
-
-  // Staged: the kNumVirtual rows of chirp c, [v][g], into the output's
-  // [g][c][v] runs, one contiguous run of kNumVirtual values per bin.
-  template <dsp::FftCopy kCopy>
-  MPTRACK_FFT_INLINE void store_chirp(std::size_t c) {
-#if MPTRACK_FFT_X86_DISPATCH
-    if constexpr (kCopy == dsp::FftCopy::kAvx512) {
-      dsp::transpose_rows_avx512<kNumVirtual, kNumRangeBins, kBinStride>(stage_re_.data(),
-                                                                         &out_re_[index(c, 0, 0)]);
-      dsp::transpose_rows_avx512<kNumVirtual, kNumRangeBins, kBinStride>(stage_im_.data(),
-                                                                         &out_im_[index(c, 0, 0)]);
-      return;
-    }
-#endif
-    dsp::transpose_rows<kNumVirtual, kNumRangeBins, kBinStride>(stage_re_.data(),
-                                                                &out_re_[index(c, 0, 0)]);
-    dsp::transpose_rows<kNumVirtual, kNumRangeBins, kBinStride>(stage_im_.data(),
-                                                                &out_im_[index(c, 0, 0)]);
-  }
-
-  // Staged: row v of chirp c alone (process_profile).
-  void store_row(std::size_t c, std::size_t v) {
-    for (std::size_t g = 0; g < kNumRangeBins; ++g) {
-      out_re_[index(c, v, g)] = stage_re_[v * kNumRangeBins + g];
-      out_im_[index(c, v, g)] = stage_im_[v * kNumRangeBins + g];
+      dst_re[g] = buf_re_[g] * cr - buf_im_[g] * ci;
+      dst_im[g] = buf_im_[g] * cr + buf_re_[g] * ci;
     }
   }
 
@@ -385,11 +366,8 @@ class RangeMatchedFilter {
   std::array<float, kM> ref_im_{};
   alignas(16) std::array<float, kM> buf_re_{};
   alignas(16) std::array<float, kM> buf_im_{};
-  std::array<float, kNumRangeBins * kBinStride> out_re_{};
-  std::array<float, kNumRangeBins * kBinStride> out_im_{};
-  // Chirp staging (kStaged): [v][g], the calibrated profiles of one chirp.
-  alignas(64) std::array<float, kStaged ? kNumVirtual * kNumRangeBins : 0> stage_re_{};
-  alignas(64) std::array<float, kStaged ? kNumVirtual * kNumRangeBins : 0> stage_im_{};
+  alignas(64) std::array<float, kNumProfiles * kProfileStride> out_re_{};
+  alignas(64) std::array<float, kNumProfiles * kProfileStride> out_im_{};
   std::array<float, kNumVirtual> cal_re_{};
   std::array<float, kNumVirtual> cal_im_{};
   FrameTally tally_{};
