@@ -13,10 +13,11 @@
 // T cells, built for the whole line by doubling (log2 T vector passes, two
 // loads a cell each, at most 6), two loads per cell; an edge cell, within
 // G + T of an end, takes its runs as differences of a running (modular,
-// uint32) sum over the two edge regions: up to six loads for CA and GO,
-// twelve for SO, from segment tables planned once per parameter set
-// (docs/algorithms/frontend.md §Peaks, "Threshold first"). Exact integers
-// either way. On x86-64 hosts it runs compiled for AVX2 or AVX-512 where
+// uint32) sum over the two edge regions: for CA and GO under kShift (the
+// default) in closed form, three loads in cell order (shift_lower_edge),
+// otherwise up to six loads for CA and GO, twelve for SO, from segment
+// tables planned once per parameter set (docs/algorithms/frontend.md
+// §Peaks, "Threshold first"). Exact integers either way. On x86-64 hosts it runs compiled for AVX2 or AVX-512 where
 // the CPU has them (run_copy; the same cells). Truncation
 // only lowers a cell, so W 2^-s <= the exact training sum S. Cfar::test()
 // computes z = fl(fl(sum in index order) / n) and detects P > fl(alpha z);
