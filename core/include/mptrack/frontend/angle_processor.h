@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "mptrack/dsp/fft_batch.h"
 #include "mptrack/frontend/doppler_processor.h"
@@ -173,6 +174,35 @@ class AngleProcessor {
     return best;
   }
 
+  /// Cells refine_lanes() takes at once.
+  static constexpr std::size_t kRefineLanes = 8;
+
+  /// refine() of n <= kRefineLanes cells (g[l], d[l], a[l]) into out[0..n):
+  /// each lane does exactly refine()'s operations on its own cell, so the
+  /// same bits. A search is a chain of dependent steps (each step's point
+  /// depends on the last comparison, each steering power on a 12-step
+  /// phasor recurrence), so one search leaves the core mostly idle; lanes
+  /// side by side overlap them (docs/algorithms/frontend.md §Angle).
+  /// The lanes' snapshots live in the processor (lanes_), not on the stack.
+  void refine_lanes(const DopplerProcessor<Caps>& dp, const std::uint16_t* g, const std::uint16_t* d,
+                    const std::uint16_t* a, std::size_t n, AngleEstimate* out) {
+    constexpr std::size_t L = kRefineLanes;
+    LaneSnapshot& y = lanes_;
+    for (std::size_t l = 0; l < L; ++l) {
+      const std::size_t k = l < n ? l : 0;  // spare lanes repeat cell 0 (never stored)
+      for (std::size_t v = 0; v < kNumVirtual; ++v) {
+        y.re[v][l] = dp.snapshot_re(g[k], d[k], v) * window_[v];
+        y.im[v][l] = dp.snapshot_im(g[k], d[k], v) * window_[v];
+      }
+    }
+    Lanes best_u{};
+    Lanes best_p{};
+    for (std::size_t l = 0; l < L; ++l) best_u[l] = static_cast<float>(bin_u(a[l < n ? l : 0]));
+    steering_power_lanes(y, best_u, best_p);
+    if (refine_iterations_ > 0) search_lanes(y, best_u, best_p);
+    for (std::size_t l = 0; l < n; ++l) out[l] = AngleEstimate{best_u[l], best_p[l]};
+  }
+
   /// sin(theta_b) at the centre of angle bin a.
   double bin_u(std::size_t a) const {
     const double h = static_cast<double>(a) - static_cast<double>(kNa / 2);
@@ -190,6 +220,100 @@ class AngleProcessor {
   bool initialized() const { return initialized_; }
 
  private:
+  using Lanes = std::array<float, kRefineLanes>;
+  /// Windowed snapshots w_v x_v of kRefineLanes cells, lane innermost.
+  struct LaneSnapshot {
+    std::array<Lanes, kNumVirtual> re{};
+    std::array<Lanes, kNumVirtual> im{};
+  };
+
+  // steering_power() at u[l] for every lane (its operations, lane by lane).
+  void steering_power_lanes(const LaneSnapshot& y, const Lanes& u, Lanes& power) const {
+    Lanes s{};
+    Lanes c{};
+    for (std::size_t l = 0; l < kRefineLanes; ++l) {
+      const float phase = -mptrack::dmath::kTwoPi<float> * static_cast<float>(spacing_) * u[l];
+      mptrack::dmath::dsincos(phase, s[l], c[l]);
+    }
+    Lanes pr{};
+    Lanes pi{};
+    Lanes acc_r{};
+    Lanes acc_i{};
+    pr.fill(1.0f);
+    for (std::size_t v = 0; v < kNumVirtual; ++v) {
+      for (std::size_t l = 0; l < kRefineLanes; ++l) {
+        const float yr = y.re[v][l];
+        const float yi = y.im[v][l];
+        acc_r[l] = acc_r[l] + (yr * pr[l] - yi * pi[l]);
+        acc_i[l] = acc_i[l] + (yr * pi[l] + yi * pr[l]);
+        const float nr = pr[l] * c[l] - pi[l] * s[l];
+        const float ni = pr[l] * s[l] + pi[l] * c[l];
+        pr[l] = nr;
+        pi[l] = ni;
+      }
+    }
+    for (std::size_t l = 0; l < kRefineLanes; ++l) power[l] = acc_r[l] * acc_r[l] + acc_i[l] * acc_i[l];
+  }
+
+  // refine()'s golden-section search, every lane on its own bracket: the
+  // branches become per-lane choices, each lane's values those of refine().
+  void search_lanes(const LaneSnapshot& y, Lanes& best_u, Lanes& best_p) const {
+    constexpr float kInvPhi = 0.618033988749894848f;
+    const float step = static_cast<float>(1.0 / (static_cast<double>(kNa) * spacing_));
+    Lanes lo{};
+    Lanes hi{};
+    Lanes x1{};
+    Lanes x2{};
+    for (std::size_t l = 0; l < kRefineLanes; ++l) {
+      lo[l] = best_u[l] - step;
+      hi[l] = best_u[l] + step;
+      if (lo[l] < -1.0f) lo[l] = -1.0f;
+      if (hi[l] > 1.0f) hi[l] = 1.0f;
+      x1[l] = hi[l] - kInvPhi * (hi[l] - lo[l]);
+      x2[l] = lo[l] + kInvPhi * (hi[l] - lo[l]);
+    }
+    Lanes f1{};
+    Lanes f2{};
+    steering_power_lanes(y, x1, f1);
+    steering_power_lanes(y, x2, f2);
+    std::array<bool, kRefineLanes> left{};  // maximum in [lo, x2]: refine()'s f1 >= f2
+    Lanes xn{};
+    Lanes fn{};
+    for (std::size_t it = 0; it < refine_iterations_; ++it) {
+      for (std::size_t l = 0; l < kRefineLanes; ++l) {
+        keep_better(x1[l], f1[l], best_u[l], best_p[l]);
+        keep_better(x2[l], f2[l], best_u[l], best_p[l]);
+        left[l] = f1[l] >= f2[l];
+        if (left[l]) {
+          hi[l] = x2[l];
+          x2[l] = x1[l];
+          f2[l] = f1[l];
+          x1[l] = hi[l] - kInvPhi * (hi[l] - lo[l]);
+          xn[l] = x1[l];
+        } else {
+          lo[l] = x1[l];
+          x1[l] = x2[l];
+          f1[l] = f2[l];
+          x2[l] = lo[l] + kInvPhi * (hi[l] - lo[l]);
+          xn[l] = x2[l];
+        }
+      }
+      steering_power_lanes(y, xn, fn);
+      for (std::size_t l = 0; l < kRefineLanes; ++l) (left[l] ? f1[l] : f2[l]) = fn[l];
+    }
+    for (std::size_t l = 0; l < kRefineLanes; ++l) {
+      keep_better(x1[l], f1[l], best_u[l], best_p[l]);
+      keep_better(x2[l], f2[l], best_u[l], best_p[l]);
+    }
+  }
+
+  static void keep_better(float x, float f, float& best_u, float& best_p) {
+    if (f > best_p) {
+      best_u = x;
+      best_p = f;
+    }
+  }
+
   // Lane l of the batch = range bin g0 + l: the windowed snapshot of cell
   // (g0 + l, d), zero-padded to N_A. Input row v is the run g0..g0+lanes of
   // the Doppler stage's row (v, d). Lanes past the last range bin (a
@@ -244,6 +368,7 @@ class AngleProcessor {
   std::array<float, kNumVirtual> window_{};
   std::array<float, kMapSize> map_{};
   std::array<bool, kNa> tested_{};
+  LaneSnapshot lanes_{};  ///< refine_lanes() workspace
   double spacing_ = 0.5;
   std::size_t refine_iterations_ = 0;
   bool initialized_ = false;

@@ -341,6 +341,7 @@ class FrontEnd {
   /// (F3: a noise estimate at the min_noise_power floor under a huge peak).
   template <std::size_t N>
   std::size_t emit(Scan<float, N>& out) {
+    refine_kept();
     std::size_t nonfinite = 0;
     for (std::size_t i = 0; i < peaks_.size(); ++i) {
       if (!keep_[i]) continue;  // a stronger candidate's sidelobe
@@ -348,7 +349,7 @@ class FrontEnd {
       const std::size_t g = c.range_bin;
       const std::size_t d = c.doppler_bin;
       const std::size_t a = c.angle_bin;
-      const AngleEstimate ae = ang_.refine(dop_, g, d, a);
+      const AngleEstimate ae = refined_[i];
       float dg = 0.0f;
       if (g > 0 && g + 1 < kNumRangeBins) {
         dg = log_parabolic_offset(ang_.power(g - 1, d, a), c.power, ang_.power(g + 1, d, a));
@@ -380,6 +381,32 @@ class FrontEnd {
     return nonfinite;
   }
 
+  /// Angle refinement of every kept peak into refined_, kRefineLanes peaks
+  /// at a time (AngleProcessor::refine_lanes: the bits of refine()).
+  void refine_kept() {
+    constexpr std::size_t L = AngleProcessor<Caps>::kRefineLanes;
+    std::array<std::uint16_t, L> g{};
+    std::array<std::uint16_t, L> d{};
+    std::array<std::uint16_t, L> a{};
+    std::array<std::size_t, L> at{};
+    std::array<AngleEstimate, L> est{};
+    std::size_t n = 0;
+    for (std::size_t i = 0; i <= peaks_.size(); ++i) {
+      if (i < peaks_.size()) {
+        if (!keep_[i]) continue;
+        g[n] = peaks_[i].range_bin;
+        d[n] = peaks_[i].doppler_bin;
+        a[n] = peaks_[i].angle_bin;
+        at[n++] = i;
+        if (n < L) continue;
+      }
+      if (n == 0) continue;
+      ang_.refine_lanes(dop_, g.data(), d.data(), a.data(), n, est.data());
+      for (std::size_t l = 0; l < n; ++l) refined_[at[l]] = est[l];
+      n = 0;
+    }
+  }
+
   RangeMatchedFilter<Caps> rmf_{};
   DopplerProcessor<Caps> dop_{};
   AngleProcessor<Caps> ang_{};
@@ -388,6 +415,7 @@ class FrontEnd {
   PeakList<Caps::kMaxDetections> peaks_{};
   SidelobeFilter<Caps> sidelobe_{};
   std::array<bool, Caps::kMaxDetections> keep_{};  ///< peaks_[i] survives sidelobe grouping
+  std::array<AngleEstimate, Caps::kMaxDetections> refined_{};  ///< refine() of kept peaks_[i]
   FrontEndCounters counters_{};
   double range_bin_m_ = 0.0;
   std::size_t gate_lo_ = 0;
