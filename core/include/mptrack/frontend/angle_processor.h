@@ -135,45 +135,6 @@ class AngleProcessor {
     return refine_snapshot(xr.data(), xi.data(), a);
   }
 
-  /// refine() on a snapshot given as kNumVirtual planar values.
-  AngleEstimate refine_snapshot(const float* xr, const float* xi, std::size_t a) const {
-    AngleEstimate best;
-    best.u = static_cast<float>(bin_u(a));
-    best.power = steering_power(xr, xi, best.u);
-    if (refine_iterations_ == 0) return best;
-    const float step = static_cast<float>(1.0 / (static_cast<double>(kNa) * spacing_));
-    float lo = best.u - step;
-    float hi = best.u + step;
-    if (lo < -1.0f) lo = -1.0f;
-    if (hi > 1.0f) hi = 1.0f;
-    // Golden-section search (Kiefer 1953), fixed iteration count.
-    constexpr float kInvPhi = 0.618033988749894848f;
-    float x1 = hi - kInvPhi * (hi - lo);
-    float x2 = lo + kInvPhi * (hi - lo);
-    float f1 = steering_power(xr, xi, x1);
-    float f2 = steering_power(xr, xi, x2);
-    for (std::size_t it = 0; it < refine_iterations_; ++it) {
-      if (f1 > best.power) best = AngleEstimate{x1, f1};
-      if (f2 > best.power) best = AngleEstimate{x2, f2};
-      if (f1 >= f2) {  // maximum in [lo, x2]
-        hi = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = hi - kInvPhi * (hi - lo);
-        f1 = steering_power(xr, xi, x1);
-      } else {
-        lo = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = lo + kInvPhi * (hi - lo);
-        f2 = steering_power(xr, xi, x2);
-      }
-    }
-    if (f1 > best.power) best = AngleEstimate{x1, f1};
-    if (f2 > best.power) best = AngleEstimate{x2, f2};
-    return best;
-  }
-
   /// Cells refine_lanes() takes at once.
   static constexpr std::size_t kRefineLanes = 8;
 
@@ -220,6 +181,46 @@ class AngleProcessor {
   bool initialized() const { return initialized_; }
 
  private:
+  // refine() on a snapshot given as kNumVirtual planar values (the scalar
+  // reference refine_lanes() is tested against).
+  AngleEstimate refine_snapshot(const float* xr, const float* xi, std::size_t a) const {
+    AngleEstimate best;
+    best.u = static_cast<float>(bin_u(a));
+    best.power = steering_power(xr, xi, best.u);
+    if (refine_iterations_ == 0) return best;
+    const float step = static_cast<float>(1.0 / (static_cast<double>(kNa) * spacing_));
+    float lo = best.u - step;
+    float hi = best.u + step;
+    if (lo < -1.0f) lo = -1.0f;
+    if (hi > 1.0f) hi = 1.0f;
+    // Golden-section search (Kiefer 1953), fixed iteration count.
+    constexpr float kInvPhi = 0.618033988749894848f;
+    float x1 = hi - kInvPhi * (hi - lo);
+    float x2 = lo + kInvPhi * (hi - lo);
+    float f1 = steering_power(xr, xi, x1);
+    float f2 = steering_power(xr, xi, x2);
+    for (std::size_t it = 0; it < refine_iterations_; ++it) {
+      if (f1 > best.power) best = AngleEstimate{x1, f1};
+      if (f2 > best.power) best = AngleEstimate{x2, f2};
+      if (f1 >= f2) {  // maximum in [lo, x2]
+        hi = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = hi - kInvPhi * (hi - lo);
+        f1 = steering_power(xr, xi, x1);
+      } else {
+        lo = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = lo + kInvPhi * (hi - lo);
+        f2 = steering_power(xr, xi, x2);
+      }
+    }
+    if (f1 > best.power) best = AngleEstimate{x1, f1};
+    if (f2 > best.power) best = AngleEstimate{x2, f2};
+    return best;
+  }
+
   using Lanes = std::array<float, kRefineLanes>;
   /// Windowed snapshots w_v x_v of kRefineLanes cells, lane innermost.
   struct LaneSnapshot {

@@ -111,7 +111,8 @@ class CfarScreen {
     // The closed-form kShift edges, here where the AVX-512 target applies
     // (cfar_shift_edges_avx512.h), then the collection screen() left.
     shift_pending_ = false;
-    const cfar_detail::ShiftEdgeGeometry geo{prefix_.data(), kLen, shift_guard_, shift_train_};
+    const CfarParams& p = cfar.params();
+    const cfar_detail::ShiftEdgeGeometry geo{prefix_.data(), kLen, p.guard_cells, p.training_cells};
     cfar_detail::shift_lower_edge_avx512(geo, line, flags_.data(), lo, shift_lo_end_, shift_k_);
     cfar_detail::shift_upper_edge_avx512(geo, line, flags_.data(), shift_hi_begin_, hi, shift_k_);
     collect(lo, hi);
@@ -185,8 +186,6 @@ class CfarScreen {
         shift_lo_end_ = edge_lo_end;
         shift_hi_begin_ = edge_hi_begin;
         shift_k_ = k;
-        shift_guard_ = p.guard_cells;
-        shift_train_ = p.training_cells;
         return 0;
       }
 #endif
@@ -291,6 +290,12 @@ class CfarScreen {
     return count_;
   }
 
+  // The screen's test of cell i against window sum w (every path: interior,
+  // planned and closed-form edges): P > fl(float(W) k), header.
+  MPTRACK_FFT_INLINE void flag_cell(const float* line, std::size_t i, std::uint32_t w, float k) {
+    flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+  }
+
   // Kept cells in ascending order. Flags are read eight at a time: on noise
   // nearly every word is zero, so the per-cell branch runs only near targets.
   MPTRACK_FFT_INLINE void collect(std::size_t lo, std::size_t hi) {
@@ -321,7 +326,7 @@ class CfarScreen {
       const std::uint32_t wr = box[i + g + 1];  // cells (i + G, i + G + T]
       std::uint32_t w = wl + wr;
       if constexpr (kSo) w = wl < wr ? wl : wr;
-      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+      flag_cell(line, i, w, k);
     }
   }
 
@@ -339,11 +344,11 @@ class CfarScreen {
     const std::size_t mid = to < g + 1 ? to : g + 1;  // cells i <= G: h = 0
     for (std::size_t i = from; i < mid; ++i) {
       const std::uint32_t w = q[i + g + 1 + 2 * t] - q[i + g + 1];
-      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+      flag_cell(line, i, w, k);
     }
     for (std::size_t i = from > mid ? from : mid; i < to; ++i) {  // h = i - G
       const std::uint32_t w = q[i - g] + q[e] - q[i + g + 1];
-      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+      flag_cell(line, i, w, k);
     }
   }
 
@@ -359,11 +364,11 @@ class CfarScreen {
     const std::size_t mid = to < split ? to : split;
     for (std::size_t i = from; i < mid; ++i) {
       const std::uint32_t w = (q[i - g] - q[base]) + (q[kLen] - q[i + g + 1]);
-      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+      flag_cell(line, i, w, k);
     }
     for (std::size_t i = from > mid ? from : mid; i < to; ++i) {
       const std::uint32_t w = q[i - g] - q[i - g - 2 * t];
-      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+      flag_cell(line, i, w, k);
     }
   }
 
@@ -507,7 +512,7 @@ class CfarScreen {
       } else {
         w = run_sum<kSegs>(q, kWhole, slot);
       }
-      flags_[i] = static_cast<std::uint8_t>(line[i] > static_cast<float>(static_cast<std::int32_t>(w)) * k);
+      flag_cell(line, i, w, k);
     }
   }
 
@@ -546,8 +551,6 @@ class CfarScreen {
   bool shift_pending_ = false;
   std::size_t shift_lo_end_ = 0;
   std::size_t shift_hi_begin_ = 0;
-  std::size_t shift_guard_ = 0;
-  std::size_t shift_train_ = 0;
   float shift_k_ = 0.0f;
   std::size_t count_ = 0;
 };
