@@ -134,6 +134,7 @@ nlohmann::ordered_json track_scores_json(const TrackScoreTotals& t) {
 nlohmann::ordered_json seed003_metrics_json(const CompareRow& x) {
   const TrackScoreTotals& t = x.track_scores;
   return {{"amota", t.amota()},
+          {"amota_unscaled", t.amota_unscaled()},
           {"ids", t.per_target(t.id_switches)},
           {"frag", t.per_target(t.fragmentations)},
           {"rmse_range_m", t.rmse_range_m()},

@@ -133,6 +133,7 @@ void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
   // seed 003 Sec. IV-A (docs/algorithms/metrics.md §AMOTA, §MOSPA with a
   // Mahalanobis base distance); "mospa" above stays the Euclidean mean OSPA [m].
   j["amota"] = t.amota();
+  j["amota_unscaled"] = t.amota_unscaled();
   j["rmse_range_m"] = t.rmse_range_m();
   j["rmse_velocity_mps"] = t.rmse_velocity_mps();
   j["mospa_mahalanobis"] = s.mean_ospa_mahalanobis;

@@ -13,6 +13,11 @@ double MotCounts::mota() const {
   return 1.0 - static_cast<double>(fp + fn + ids) / static_cast<double>(truths);
 }
 
+double MotCounts::motar() const {
+  if (tp == 0) return 0.0;
+  return 1.0 - static_cast<double>(fp + ids) / static_cast<double>(tp);
+}
+
 double MotCounts::recall() const {
   return truths > 0 ? static_cast<double>(tp) / static_cast<double>(truths) : 0.0;
 }
@@ -64,26 +69,27 @@ std::vector<double> true_positive_scores(const std::vector<scenario::SimScan>& s
 
 }  // namespace
 
-double run_amota(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
-                 const AmotaParams& params, ScoringSolver& solver) {
+AmotaScore run_amota(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
+                     const AmotaParams& params, ScoringSolver& solver) {
   std::uint64_t truths = 0;
   for (const scenario::SimScan& s : scans) truths += s.truth.size();
   const std::uint64_t L = params.recall_points;
-  if (truths == 0 || L == 0) return 0.0;
+  if (truths == 0 || L == 0) return {};
   const std::vector<double> tp_scores = true_positive_scores(scans, by_scan, params.gate_m, solver);
-  std::map<double, double> mota_at;  // threshold -> MOTA (ties share a threshold)
-  double sum = 0.0;
+  std::map<double, MotCounts> counts_at;  // threshold -> counts (ties share a threshold)
+  AmotaScore sum;
   for (std::uint64_t i = 1; i <= L; ++i) {
     const std::uint64_t k = (i * truths + L - 1) / L;  // ceil(r num_gt), r = i / L, in integers
-    if (k > tp_scores.size()) continue;               // recall r never reached: MOTA_r = 0
+    if (k > tp_scores.size()) continue;               // recall r never reached: MOTAR_r = MOTA_r = 0
     const double threshold = tp_scores[k - 1];
-    auto it = mota_at.find(threshold);
-    if (it == mota_at.end()) {
-      it = mota_at.emplace(threshold, mot_counts(scans, by_scan, params.gate_m, threshold, solver).mota()).first;
+    auto it = counts_at.find(threshold);
+    if (it == counts_at.end()) {
+      it = counts_at.emplace(threshold, mot_counts(scans, by_scan, params.gate_m, threshold, solver)).first;
     }
-    sum += it->second;
+    sum.normalised += it->second.motar();
+    sum.unscaled += it->second.mota();
   }
-  return sum / static_cast<double>(L);
+  return {sum.normalised / static_cast<double>(L), sum.unscaled / static_cast<double>(L)};
 }
 
 }  // namespace mptrack::sim

@@ -200,7 +200,9 @@ RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::
     }
   }
   for (const TargetFollower& f : followers) run.targets.push_back(f.score);
-  run.amota = run_amota(scans, by_scan, AmotaParams{params.gate_m, kAmotaRecallPoints}, *solver);
+  const AmotaScore amota = run_amota(scans, by_scan, AmotaParams{params.gate_m, kAmotaRecallPoints}, *solver);
+  run.amota = amota.normalised;
+  run.amota_unscaled = amota.unscaled;
   return run;
 }
 
@@ -234,6 +236,7 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
     if (f < min_settled_coverage) min_settled_coverage = f;
   }
   amota_sum += run.amota;
+  amota_unscaled_sum += run.amota_unscaled;
 }
 
 namespace {
@@ -250,6 +253,7 @@ double TrackScoreTotals::per_target(std::uint64_t count) const { return ratio(st
 double TrackScoreTotals::rmse_range_m() const { return std::sqrt(ratio(sq_range_err_sum_m2, covered_scans)); }
 double TrackScoreTotals::rmse_velocity_mps() const { return std::sqrt(ratio(sq_velocity_err_sum_m2ps2, covered_scans)); }
 double TrackScoreTotals::amota() const { return ratio(amota_sum, runs); }
+double TrackScoreTotals::amota_unscaled() const { return ratio(amota_unscaled_sum, runs); }
 double TrackScoreTotals::settled_coverage() const {
   return ratio(static_cast<double>(settled_covered_scans), settled_scans);
 }

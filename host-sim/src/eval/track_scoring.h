@@ -64,7 +64,8 @@ struct RunTrackScore {
   std::uint32_t valid_tracks = 0;     ///< scored tracks assigned to one target for at least half their scans
   std::uint32_t false_tracks = 0;     ///< scored tracks that are not valid (clutter, ghosts)
   std::uint32_t targets_with_valid_track = 0;  ///< NVT of the run: distinct targets some valid track follows
-  double amota = 0.0;                 ///< AMOTA of the run (eval/amota.h)
+  double amota = 0.0;                 ///< AMOTA of the run, recall-normalised (eval/amota.h)
+  double amota_unscaled = 0.0;        ///< the same, unscaled (AmotaScore::unscaled)
 };
 
 /// track id -> target id (kNoTarget: unmatched) for one scan's tracks.
@@ -104,6 +105,7 @@ struct TrackScoreTotals {
   double abs_range_err_sum_m = 0.0, abs_bearing_err_sum_rad = 0.0;
   double sq_range_err_sum_m2 = 0.0, sq_velocity_err_sum_m2ps2 = 0.0;
   double amota_sum = 0.0;                          ///< sum of the runs' AMOTA
+  double amota_unscaled_sum = 0.0;                 ///< sum of the runs' unscaled AMOTA
   /// Settled coverage (kSettleScans): pooled scans, the worst (run, target)
   /// fraction, and per target id the pooled scans over runs.
   std::uint64_t settled_scans = 0, settled_covered_scans = 0;
@@ -121,6 +123,7 @@ struct TrackScoreTotals {
   double rmse_range_m() const;       ///< RMS ground range error over covered target-scans [m]
   double rmse_velocity_mps() const;  ///< RMS of |velocity error| over covered target-scans [m/s]
   double amota() const;              ///< AMOTA, mean over runs (seed 003 Sec. IV-A)
+  double amota_unscaled() const;     ///< unscaled AMOTA, mean over runs
   double settled_coverage() const;   ///< settled covered / settled alive target-scans (pooled)
   double settled_coverage_of(std::uint32_t target_id) const;  ///< the same for one target id over runs
 };
