@@ -73,24 +73,33 @@ struct RunResult {
   std::uint64_t bp_runs = 0;
 };
 
-/// 30 scans of the seed 000 two-target scene (tests/unit/mfbp_scenario.h),
-/// window 7 / slide 3; nemp == nullptr: plain MF-BP; with_patches: every
-/// detection carries (zero) features.
-RunResult run_scene(Nemp* nemp, bool with_patches, std::uint64_t* born = nullptr) {
+/// Window of run_scene(): 7 / 3 fills the store (kMaxWindow 7, no history
+/// scans); 4 / 1 keeps three history scans behind the window.
+struct WindowShape {
+  std::size_t length = 7;
+  std::size_t slide = 3;
+};
+
+/// 30 scans of the seed 000 two-target scene (tests/unit/mfbp_scenario.h);
+/// nemp == nullptr: plain MF-BP; with_patches: every detection carries
+/// (zero) features, except on scans k with k % patchless_every == 0 (if
+/// patchless_every > 0).
+RunResult run_scene(Nemp* nemp, bool with_patches, std::uint64_t* born = nullptr,
+                    WindowShape w = WindowShape{}, int patchless_every = 0) {
   auto trk = std::make_unique<Tracker>();
   MfbpParams<float> p = seed000_default_params<float>();
-  p.window_length = 7;
-  p.slide = 3;
+  p.window_length = w.length;
+  p.slide = w.slide;
   p.uniform_rate_per_scan = 10.0f;
   REQUIRE(trk->init(p) == Status::kOk);
   if (nemp != nullptr) REQUIRE(trk->attach_nemp(nemp) == Status::kOk);
   auto ev = std::make_unique<Evidence>();
-  ev->has_patch.fill(with_patches);
   mfbp_test::Lcg rng;
   auto scan = std::make_unique<TestScan>();
   RunResult r;
   for (int k = 0; k < 30; ++k) {
     mfbp_test::make_scan(rng, k, 10, *scan);
+    ev->has_patch.fill(with_patches && !(patchless_every > 0 && k % patchless_every == 0));
     const Status s = nemp != nullptr ? trk->step(*scan, *ev) : trk->step(*scan);
     REQUIRE(s == Status::kOk);
     record(*trk, r.bits);
@@ -115,6 +124,8 @@ struct FakeBp {
 struct FakeSlot {
   std::size_t count = 1;
   std::array<std::uint16_t, TestCaps::kMaxMeasurements> orig_index{};
+  std::array<bool, TestCaps::kMaxMeasurements> vetoed{};
+  void set_birth_vetoed(std::size_t c, bool on) { vetoed[c] = on; }
 };
 
 }  // namespace
@@ -176,6 +187,27 @@ TEST_CASE("NEMP birth veto: detections the classifier calls clutter start no tra
   std::uint64_t born_no_patch = 0;
   (void)run_scene(nemp.get(), false, &born_no_patch);
   CHECK(born_no_patch == born_plain);
+}
+
+TEST_CASE("NEMP birth veto holds on history scans: a vetoed detection never becomes a first point") {
+  // Window 4 of a 7-scan store, so births may pair a second point of the
+  // oldest window scan with a first point on a history scan. Every 4th scan
+  // has no patches (never vetoed), the others are all vetoed: with
+  // birth_max_lag 3 no two unvetoed points can pair, so no track may start
+  // unless a vetoed history point is taken as a first point.
+  const WindowShape short_window{4, 1};
+  constexpr int kUnvetoedEvery = 4;
+  REQUIRE(seed000_default_params<float>().birth_max_lag < static_cast<std::size_t>(kUnvetoedEvery));
+  std::uint64_t born_plain = 0, born_vetoed = 0;
+  (void)run_scene(nullptr, false, &born_plain, short_window);
+  REQUIRE(born_plain > 0u);
+  auto clutterish = std::make_unique<ConstantHead>(-3.0f);  // w = 0.047 < 0.5 everywhere
+  auto nemp = std::make_unique<Nemp>();
+  mfbp::NempParams<float> p;
+  p.birth_min_target_prob = 0.5f;
+  REQUIRE(nemp->init(&clutterish->classifier, p) == Status::kOk);
+  (void)run_scene(nemp.get(), true, &born_vetoed, short_window, kUnvetoedEvery);
+  CHECK(born_vetoed == 0u);
 }
 
 TEST_CASE("NEMP clutter side and gain: w above the bound is no evidence, the gain squares the odds") {

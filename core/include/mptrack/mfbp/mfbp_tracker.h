@@ -299,7 +299,7 @@ class MfbpTracker {
   }
 
   void spawn_tracks(std::size_t n) {
-    track_spawner_.spawn(n, store_, tracks_, clutter_, params_, model_, next_track_id_, counters_, nemp_);
+    track_spawner_.spawn(n, store_, tracks_, clutter_, params_, model_, next_track_id_, counters_);
   }
 
   // Second birth pass (our choice, docs/algorithms/mfbp.md §Departures):

@@ -101,15 +101,17 @@ class NempState {
   const NempParams<T>& params() const { return params_; }
 
   /// Evidence of the scan just stored at window index k: stored measurement
-  /// c is input measurement orig_index[c]. ev == nullptr: no patches.
+  /// c is input measurement orig_index[c]. ev == nullptr: no patches. Marks
+  /// the slot's birth veto (ScanSlot::kBirthVetoed, a slot field, so the veto shifts into
+  /// history with the scan).
   template <class Slot>
-  void store_scan(std::size_t k, const Slot& s, const Evidence* ev) {
+  void store_scan(std::size_t k, Slot& s, const Evidence* ev) {
     for (std::size_t c = 0; c < s.count; ++c) {
       const std::size_t j = s.orig_index[c];
       has_[k][c] = ev != nullptr && ev->has_patch[j];
       features_[k][c] = ev != nullptr ? ev->features[j] : classify::Features{};
       log_factor_[k][c] = T(0);
-      birth_veto_[k][c] = has_[k][c] && vetoes_birth(features_[k][c]);
+      s.set_birth_vetoed(c, has_[k][c] && vetoes_birth(features_[k][c]));
     }
     // Belief record: input detection j starts at the uninformative 0.5
     // (detections refused at intake keep it).
@@ -126,7 +128,6 @@ class NempState {
       has_[k - fc] = has_[k];
       features_[k - fc] = features_[k];
       log_factor_[k - fc] = log_factor_[k];
-      birth_veto_[k - fc] = birth_veto_[k];
       belief_[k - fc] = belief_[k];
       orig_[k - fc] = orig_[k];
     }
@@ -176,10 +177,6 @@ class NempState {
     return changed;
   }
 
-  /// Stored detection c of window scan k may not start a track: its
-  /// classifier probability at belief 0.5 is below birth_min_target_prob.
-  bool birth_vetoed(std::size_t k, std::size_t c) const { return birth_veto_[k][c]; }
-
   /// The NEMP factor of stored detection c of window scan k (tests, reports).
   T log_factor(std::size_t k, std::size_t c) const { return log_factor_[k][c]; }
 
@@ -211,7 +208,6 @@ class NempState {
   std::array<std::array<bool, kMaxMeas>, kMaxWindow> has_{};
   std::array<std::array<classify::Features, kMaxMeas>, kMaxWindow> features_{};
   std::array<std::array<T, kMaxMeas>, kMaxWindow> log_factor_{};
-  std::array<std::array<bool, kMaxMeas>, kMaxWindow> birth_veto_{};
   // Belief record (finalised_belief()): per window scan, by input index.
   static_assert(kMaxMeas <= 65536, "orig_ holds input indices in 16 bits");
   std::array<std::array<float, kMaxMeas>, kMaxWindow> belief_{};

@@ -20,10 +20,10 @@
 // or a track born in the same pass is never evicted. Otherwise the birth is
 // refused (track_cap_hits).
 //
-// NEMP (docs/algorithms/nemp.md §Birth): with a NEMP state, a window-scan
-// detection the classifier vetoes (NempParams::birth_min_target_prob) is
-// no birth point, first or second. History scans carry no classifier
-// evidence and are not vetoed.
+// NEMP (docs/algorithms/nemp.md §Birth): a detection the classifier vetoes
+// (ScanSlot::birth_vetoed, set by NempState::store_scan from
+// NempParams::birth_min_target_prob) is no birth point, first or second,
+// while its scan is in the window and after it has moved into history.
 #pragma once
 
 #include <array>
@@ -35,7 +35,6 @@
 #include "mptrack/mfbp/mfbp_caps.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/model_constants.h"
-#include "mptrack/mfbp/nemp.h"
 #include "mptrack/mfbp/track_birth.h"
 #include "mptrack/mfbp/track_slot.h"
 #include "mptrack/mfbp/weaker_clutter.h"
@@ -59,9 +58,8 @@ class TrackSpawner {
   /// tracks from the best pairs among the n window scans (second points).
   void spawn(std::size_t n, Store& store, Tracks& tracks, const ClutterTable<T, Caps>& cl,
              const MfbpParams<T>& p, const ModelConstants<T>& mc, std::uint32_t& next_id,
-             TrackerCounters& counters, const NempState<T, Caps>* nemp = nullptr) {
+             TrackerCounters& counters) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
-    nemp_ = nemp;
     mark_unexplained(store, tracks, cl, p, mc);
     Candidates cand{};
     std::size_t nc = 0;
@@ -76,7 +74,7 @@ class TrackSpawner {
     std::size_t in_clutter = 0;
     for (std::size_t b = 0; b < nc; ++b) {
       if (cand[b].in_clutter && in_clutter++ >= p.birth_max_in_clutter) {
-        set_consumed(store, cand[b], 0);  // bounded births inside clutter (not a cap)
+        mark_used_by_birth(store, cand[b], false);  // bounded births inside clutter (not a cap)
         continue;
       }
       start_track(cand[b], store, tracks, p, first_new, next_id, counters);
@@ -85,7 +83,7 @@ class TrackSpawner {
 
   /// Unexplained by the tracks at the last spawn() and not used by a birth.
   bool unexplained(const Store& store, std::size_t si, std::size_t j) const {
-    return unexplained_[si][j] != 0 && store.at(si).consumed[j] == 0;
+    return unexplained_[si][j] != 0 && !store.at(si).used_by_birth(j);
   }
 
  private:
@@ -99,10 +97,10 @@ class TrackSpawner {
   static constexpr std::uint8_t kExplained = 0, kFree = 1, kInClutter = 2;
   using Candidates = std::array<Candidate, kMaxCandidates>;
 
-  /// Unexplained and, with NEMP, not vetoed by the classifier.
+  /// Unexplained and, with NEMP, not vetoed by the classifier (on window
+  /// and history scans alike).
   bool birth_point(const Store& store, std::size_t si, std::size_t j) const {
-    if (!unexplained(store, si, j)) return false;
-    return nemp_ == nullptr || si < store.n_hist() || !nemp_->birth_vetoed(si - store.n_hist(), j);
+    return unexplained(store, si, j) && !store.at(si).birth_vetoed(j);
   }
 
   void mark_unexplained(const Store& store, const Tracks& tracks, const ClutterTable<T, Caps>& cl,
@@ -111,7 +109,7 @@ class TrackSpawner {
     for (std::size_t si = 0; si < store.size(); ++si) {
       const ScanSlot<T, Caps>& s = store.at(si);
       for (std::size_t j = 0; j < s.count; ++j) {
-        bool u = s.consumed[j] == 0;
+        bool u = !s.used_by_birth(j);
         bool in_clutter = false;
         if (u && s.has_beliefs) {
           const T comp_share = T(1) - s.target_share[j] - s.uniform_share[j];
@@ -215,7 +213,7 @@ class TrackSpawner {
   }
 
   /// The pair of second point (s2, j2) at the shortest lag, ranked among
-  /// the candidates (its measurements are marked consumed while it stays).
+  /// the candidates (its measurements are marked used by a birth while it stays).
   void pair_second_point(Store& store, std::size_t s2, std::size_t j2, const MfbpParams<T>& p,
                          Candidates& cand, std::size_t& nc, std::size_t max_births) const {
     for (std::size_t lag = 1; lag <= p.birth_max_lag && lag <= s2; ++lag) {
@@ -239,10 +237,10 @@ class TrackSpawner {
                     std::size_t max_births) {
     if (nc == max_births) {
       if (!(c.score > cand[nc - 1].score)) return;
-      set_consumed(store, cand[nc - 1], 0);
+      mark_used_by_birth(store, cand[nc - 1], false);
       --nc;
     }
-    set_consumed(store, c, 1);  // so no measurement joins two pairs
+    mark_used_by_birth(store, c, true);  // so no measurement joins two pairs
     std::size_t pos = nc;
     while (pos > 0 && c.score > cand[pos - 1].score) {
       cand[pos] = cand[pos - 1];
@@ -252,9 +250,9 @@ class TrackSpawner {
     ++nc;
   }
 
-  static void set_consumed(Store& store, const Candidate& c, std::uint8_t v) {
-    store.at(c.s1).consumed[c.j1] = v;
-    store.at(c.s2).consumed[c.j2] = v;
+  static void mark_used_by_birth(Store& store, const Candidate& c, bool on) {
+    store.at(c.s1).set_used_by_birth(c.j1, on);
+    store.at(c.s2).set_used_by_birth(c.j2, on);
   }
 
   /// The live tentative track least likely to be confirmed (smallest
@@ -288,7 +286,7 @@ class TrackSpawner {
     if (slot == Tracks::kSize) slot = evict_tentative(tracks, store.n_win(), p, first_new, counters);
     if (slot == Tracks::kSize) {
       ++counters.track_cap_hits;
-      set_consumed(store, c, 0);
+      mark_used_by_birth(store, c, false);
       return;
     }
     const ScanSlot<T, Caps>& a = store.at(c.s1);
@@ -304,7 +302,6 @@ class TrackSpawner {
   }
 
   std::array<std::array<std::uint8_t, kMaxMeas>, kStore> unexplained_{};
-  const NempState<T, Caps>* nemp_ = nullptr;  ///< during spawn(); not owned
 };
 
 }  // namespace mptrack::mfbp

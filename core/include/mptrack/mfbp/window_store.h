@@ -46,7 +46,9 @@ struct ScanSlot {
   std::array<std::uint16_t, kMaxMeas> orig_index{};
   std::array<T, kMaxMeas> target_share{};   ///< sum_i a_hat^t_ij
   std::array<T, kMaxMeas> uniform_share{};  ///< a_hat^c_0j
-  std::array<std::uint8_t, kMaxMeas> consumed{};  ///< used by a two-point birth
+  /// Per measurement, bits kUsedByBirth | kBirthVetoed (one byte for both:
+  /// the veto must not grow plain MF-BP's footprint).
+  std::array<std::uint8_t, kMaxMeas> birth_flags{};
   std::array<std::uint16_t, kMaxMeas> by_range{};  ///< indices sorted by (range, index)
   std::array<NwStats<T>, kSources> nw_stats{};       ///< per source slot (0 = uniform)
   std::array<AmplitudeStats<T>, kSources> amp_stats{};
@@ -55,11 +57,28 @@ struct ScanSlot {
   std::array<std::uint16_t, kPool> edge_meas{};
   std::array<T, kPool> edge_w{};
 
+  /// In a two-point birth pair (TrackSpawner), so in no other pair.
+  static constexpr std::uint8_t kUsedByBirth = 1;
+  /// NEMP: the classifier calls it clutter, so it starts no track. Kept in
+  /// the slot so the veto follows the scan into history, where births take
+  /// their first points (docs/algorithms/nemp.md §Birth).
+  static constexpr std::uint8_t kBirthVetoed = 2;
+
+  bool used_by_birth(std::size_t j) const { return (birth_flags[j] & kUsedByBirth) != 0; }
+  bool birth_vetoed(std::size_t j) const { return (birth_flags[j] & kBirthVetoed) != 0; }
+  void set_used_by_birth(std::size_t j, bool on) { set_flag(j, kUsedByBirth, on); }
+  void set_birth_vetoed(std::size_t j, bool on) { set_flag(j, kBirthVetoed, on); }
+
   void clear_source_stats() {
     for (std::size_t src = 0; src < kSources; ++src) {
       nw_stats[src] = NwStats<T>{};
       amp_stats[src] = AmplitudeStats<T>{};
     }
+  }
+
+ private:
+  void set_flag(std::size_t j, std::uint8_t bit, bool on) {
+    birth_flags[j] = static_cast<std::uint8_t>(on ? (birth_flags[j] | bit) : (birth_flags[j] & ~bit));
   }
 };
 
@@ -122,7 +141,7 @@ class WindowStore {
       s.orig_index[c] = static_cast<std::uint16_t>(j);
       s.target_share[c] = T(0);
       s.uniform_share[c] = T(1);
-      s.consumed[c] = 0;
+      s.birth_flags[c] = 0;
     }
     s.clear_source_stats();
     sort_by_range(s);
