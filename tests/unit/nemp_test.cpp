@@ -147,8 +147,8 @@ TEST_CASE("NEMP off, no patches, or w = 0.5 everywhere: MF-BP output bit-identic
 }
 
 /// Settings of the sea kind (docs/algorithms/nemp.md §Sea settings): log-odds
-/// gain 2, birth veto at 0.5, the target side bounded at 0.5 (the adapter
-/// ships 0.6); neutrality must hold for any such values.
+/// gain 2, birth veto at 0.5, the target side bounded at 0.5 (as the
+/// adapter ships them); neutrality must hold for any such values.
 mfbp::NempParams<float> sea_like_params() {
   mfbp::NempParams<float> p;
   p.nn_log_odds_gain = 2.0f;

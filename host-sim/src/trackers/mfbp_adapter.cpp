@@ -73,7 +73,7 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
     }
     if (setup.sea_scenario) {
       if (variant_ != "mfbp") return variant_ + " does not run on the sea scenes (use mfbp, mfbp-nn or nemp)";
-      configure_sea_mfbp(setup, p);
+      configure_sea_mfbp(setup, SeaBirths::kBlind, p);
     }
     const std::string error = apply_mfbp_params(p, setup.mfbp_params);
     if (!error.empty()) return error;

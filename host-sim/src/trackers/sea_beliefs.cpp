@@ -38,7 +38,7 @@ sea::SceneBeliefs mfbp_scene_beliefs(const sea::SeaScenario& scenario, const sea
   setup.spec = sea_spec_view(scenario);
   setup.sea_scenario = std::make_shared<const sea::SeaScenario>(scenario);
   MfbpParams<double> p = seed000_default_params<double>();
-  configure_sea_mfbp(setup, p);
+  configure_sea_mfbp(setup, SeaBirths::kClassified, p);  // the window NEMP runs with
   auto tracker = std::make_unique<Tracker>();
   auto classifier = std::make_unique<classify::SeaClassifier>();
   auto nemp = std::make_unique<Nemp>();
