@@ -167,15 +167,21 @@ TEST_CASE("NEMP with the sea settings and w = 0.5 everywhere: MF-BP output bit-i
   CHECK(half.bp_runs == plain.bp_runs);
 }
 
+/// A NEMP state on the given head with the birth veto at 0.5.
+std::unique_ptr<Nemp> vetoing_nemp(const ConstantHead& head) {
+  auto nemp = std::make_unique<Nemp>();
+  mfbp::NempParams<float> p;
+  p.birth_min_target_prob = 0.5f;
+  REQUIRE(nemp->init(&head.classifier, p) == Status::kOk);
+  return nemp;
+}
+
 TEST_CASE("NEMP birth veto: detections the classifier calls clutter start no track") {
   std::uint64_t born_plain = 0, born_vetoed = 0, born_off = 0;
   (void)run_scene(nullptr, false, &born_plain);
   REQUIRE(born_plain > 0u);
   auto clutterish = std::make_unique<ConstantHead>(-3.0f);  // w = 0.047 < 0.5 everywhere
-  auto nemp = std::make_unique<Nemp>();
-  mfbp::NempParams<float> p;
-  p.birth_min_target_prob = 0.5f;
-  REQUIRE(nemp->init(&clutterish->classifier, p) == Status::kOk);
+  auto nemp = vetoing_nemp(*clutterish);
   (void)run_scene(nemp.get(), true, &born_vetoed);
   CHECK(born_vetoed == 0u);
   // veto off (default 0): the same classifier lets births through
@@ -202,10 +208,7 @@ TEST_CASE("NEMP birth veto holds on history scans: a vetoed detection never beco
   (void)run_scene(nullptr, false, &born_plain, short_window);
   REQUIRE(born_plain > 0u);
   auto clutterish = std::make_unique<ConstantHead>(-3.0f);  // w = 0.047 < 0.5 everywhere
-  auto nemp = std::make_unique<Nemp>();
-  mfbp::NempParams<float> p;
-  p.birth_min_target_prob = 0.5f;
-  REQUIRE(nemp->init(&clutterish->classifier, p) == Status::kOk);
+  auto nemp = vetoing_nemp(*clutterish);
   (void)run_scene(nemp.get(), true, &born_vetoed, short_window, kUnvetoedEvery);
   CHECK(born_vetoed == 0u);
 }

@@ -40,6 +40,17 @@ AmotaScore score(const Run& r, std::uint32_t recall_points) {
 double amota(const Run& r, std::uint32_t recall_points) { return score(r, recall_points).normalised; }
 double amota_unscaled(const Run& r, std::uint32_t recall_points) { return score(r, recall_points).unscaled; }
 
+/// Target 1 at x = 1000 m in each of 4 scans, track 7 on it at x = track_x
+/// with existence existence0 - existence_step * k on scan k.
+Run tracked_target(double track_x, double existence0, double existence_step) {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) {
+    r.target(k, 1, 1000.0);
+    r.track(k, 7, track_x, existence0 - existence_step * k);
+  }
+  return r;
+}
+
 MotCounts counts(const Run& r, double min_existence) {
   auto solver = std::make_unique<ScoringSolver>();
   return mot_counts(r.scans, r.est, 50.0, min_existence, *solver);
@@ -48,20 +59,12 @@ MotCounts counts(const Run& r, double min_existence) {
 }  // namespace
 
 TEST_CASE("AMOTA: a track on its target every scan and nothing else scores 1") {
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) {
-    r.target(k, 1, 1000.0);
-    r.track(k, 7, 1003.0, 0.9);
-  }
+  const Run r = tracked_target(1003.0, 0.9, 0.0);
   CHECK(amota(r, 40) == doctest::Approx(1.0));
 }
 
 TEST_CASE("MOT counts: a false track in two of four scans gives FP 2 and MOTA 1 - 2/4") {
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) {
-    r.target(k, 1, 1000.0);
-    r.track(k, 7, 1003.0, 0.9);
-  }
+  Run r = tracked_target(1003.0, 0.9, 0.0);
   r.track(1, 8, 5000.0, 0.3);
   r.track(2, 8, 5000.0, 0.3);
   const MotCounts c = counts(r, 0.0);
@@ -89,11 +92,7 @@ TEST_CASE("MOT counts: MOTAR charges false tracks and switches against true posi
 TEST_CASE("AMOTA: a false track less confident than every true positive is thresholded away") {
   // TP scores {0.9 x 4}: every recall threshold sits at 0.9, above the false
   // track's 0.3, so MOTA_r = 1 for r = 1/4..1 although MOTA at 0 is 0.5.
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) {
-    r.target(k, 1, 1000.0);
-    r.track(k, 7, 1003.0, 0.9);
-  }
+  Run r = tracked_target(1003.0, 0.9, 0.0);
   r.track(1, 8, 5000.0, 0.3);
   r.track(2, 8, 5000.0, 0.3);
   CHECK(amota(r, 4) == doctest::Approx(1.0));
@@ -122,22 +121,14 @@ TEST_CASE("AMOTA: a perfect tracker whose confidences differ scores 1") {
   // One track on its target every scan, existence 0.9, 0.8, 0.7, 0.6. The
   // threshold of recall r = i/4 keeps the i most confident scans: TP i, no FP,
   // no IDS, so MOTAR_r = 1 for every r.
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) {
-    r.target(k, 1, 1000.0);
-    r.track(k, 7, 1000.0, 1.0 - 0.1 * k);
-  }
+  const Run r = tracked_target(1000.0, 1.0, 0.1);
   CHECK(amota(r, 4) == doctest::Approx(1.0));
 }
 
 TEST_CASE("AMOTA unscaled: a perfect tracker whose confidences differ is held to MOTA_r = r") {
   // The same run: at r = i/4 FN = 4 - i, so MOTA_r = i/4 and the unscaled
   // AMOTA is (1 + 2 + 3 + 4) / 16 = (L + 1) / 2L.
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) {
-    r.target(k, 1, 1000.0);
-    r.track(k, 7, 1000.0, 1.0 - 0.1 * k);
-  }
+  const Run r = tracked_target(1000.0, 1.0, 0.1);
   CHECK(amota_unscaled(r, 4) == doctest::Approx(0.625));
 }
 
