@@ -1,7 +1,10 @@
 // summary.json and the SCR tables of the sea scenes; see sea_runner.h.
+#include <cstddef>
 #include <cstdio>
 #include <string>
+#include <vector>
 
+#include "eval/paired.h"
 #include "sea_runner.h"
 #include "writers.h"
 
@@ -51,6 +54,65 @@ std::string cell(const nlohmann::ordered_json& j, const Column& c) {
   return b;
 }
 
+/// A table's two header lines: the leading cells, then one "N dB" column
+/// per SCR of r.
+std::string scr_header(const std::vector<std::vector<SeaSummary>>& r, const char* lead, const char* lead_rule) {
+  std::string s = lead;
+  for (const auto& col : r) s += " " + std::to_string(static_cast<int>(col.front().scr_db)) + " dB |";
+  s += std::string("\n") + lead_rule;
+  for (std::size_t i = 0; i < r.size(); ++i) s += "---:|";
+  return s + "\n";
+}
+
+// NEMP against MP-NN run by run (eval/paired.h; docs/algorithms/metrics.md
+// §Paired differences): both ran on the same scenes, so the scene-to-scene
+// spread cancels and the standard error says whether a gap is noise.
+struct PairedMetric {
+  const char* key;    ///< compare.json field under nemp_minus_mfbp_nn
+  const char* title;
+  const std::vector<double>& (*per_run)(const SeaSummary&);
+};
+const std::vector<double>& amota_runs(const SeaSummary& s) { return s.base.track_scores.amota_per_run; }
+const std::vector<double>& mospa_runs(const SeaSummary& s) { return s.base.ospa_mahalanobis_per_run; }
+constexpr PairedMetric kPaired[] = {
+    {"amota", "AMOTA", &amota_runs},
+    {"mospa_mahalanobis", "MOSPA", &mospa_runs},
+};
+
+/// Index of `tracker` among a column's summaries; col.size() if absent.
+std::size_t tracker_index(const std::vector<SeaSummary>& col, const char* tracker) {
+  std::size_t i = 0;
+  while (i < col.size() && col[i].base.tracker != tracker) ++i;
+  return i;
+}
+
+/// NEMP - MP-NN of one metric in one column; runs 0 if either is absent.
+PairedDifference nemp_minus_mpnn(const std::vector<SeaSummary>& col, const PairedMetric& m) {
+  const std::size_t a = tracker_index(col, "nemp"), b = tracker_index(col, "mfbp-nn");
+  if (a == col.size() || b == col.size()) return PairedDifference{};
+  return paired_difference(m.per_run(col[a]), m.per_run(col[b]));
+}
+
+/// The paired rows under the table, or "" without both trackers.
+std::string paired_markdown(const std::vector<std::vector<SeaSummary>>& r) {
+  if (nemp_minus_mpnn(r.front(), kPaired[0]).runs == 0) return "";
+  std::string s =
+      "\nNEMP - MP-NN, paired over runs on the same scenes: mean of the per-run differences +- its "
+      "standard error (AMOTA higher, MOSPA lower is NEMP ahead; 2 standard errors is about 95 %).\n\n" +
+      scr_header(r, "| metric |", "|---|");
+  for (const PairedMetric& m : kPaired) {
+    s += std::string("| ") + m.title + " |";
+    for (const auto& col : r) {
+      const PairedDifference d = nemp_minus_mpnn(col, m);
+      char b[64];
+      std::snprintf(b, sizeof b, " %+.3f +- %.3f |", d.mean, d.standard_error);
+      s += b;
+    }
+    s += "\n";
+  }
+  return s;
+}
+
 }  // namespace
 
 nlohmann::ordered_json sea_summary_to_json(const SeaSummary& s) {
@@ -84,11 +146,7 @@ std::string sea_compare_to_markdown(const SeaCompareConfig& cfg, const std::vect
   std::string s = "# " + cfg.scenario.name + ": MP / MP-NN / NEMP over SCR\n\n";
   s += std::to_string(cfg.runs) + " run(s) per SCR x " + std::to_string(cfg.scenario.num_scans) + " scans, seed " +
        std::to_string(cfg.seed) + "; every tracker and every SCR on the same scenes. Plots per scan " +
-       fmt1(r.front().front().plots_per_scan) + ".\n\n| metric | tracker |";
-  for (const auto& col : r) s += " " + std::to_string(static_cast<int>(col.front().scr_db)) + " dB |";
-  s += "\n|---|---|";
-  for (std::size_t i = 0; i < r.size(); ++i) s += "---:|";
-  s += "\n";
+       fmt1(r.front().front().plots_per_scan) + ".\n\n" + scr_header(r, "| metric | tracker |", "|---|---|");
   for (const Column& c : kColumns) {
     for (std::size_t t = 0; t < r.front().size(); ++t) {
       s += std::string("| ") + c.title + " | " + paper_name(r.front()[t].base.tracker) + " |";
@@ -98,7 +156,7 @@ std::string sea_compare_to_markdown(const SeaCompareConfig& cfg, const std::vect
   }
   s += "\nn/a: the field is not in summary.json (yet), or no track was paired with a target. IDS and Frag per target (track scores); RMSE of the confirmed "
        "track paired with each target (Mahalanobis on range and range rate, within 9.4); OSPA on range with p = 2, c = 9.4 x 15 m.\n";
-  return s;
+  return s + paired_markdown(r);
 }
 
 nlohmann::ordered_json sea_compare_to_json(const SeaCompareConfig& cfg, const std::vector<std::vector<SeaSummary>>& r) {
@@ -106,7 +164,17 @@ nlohmann::ordered_json sea_compare_to_json(const SeaCompareConfig& cfg, const st
   for (const auto& col : r) {
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     for (const SeaSummary& x : col) rows.push_back(sea_summary_to_json(x));
-    levels.push_back({{"scr_db", col.empty() ? 0.0 : col.front().scr_db}, {"rows", rows}});
+    nlohmann::ordered_json level = {{"scr_db", col.empty() ? 0.0 : col.front().scr_db}, {"rows", rows}};
+    if (!col.empty() && nemp_minus_mpnn(col, kPaired[0]).runs > 0) {
+      nlohmann::ordered_json paired;
+      for (const PairedMetric& m : kPaired) {
+        const PairedDifference d = nemp_minus_mpnn(col, m);
+        paired[m.key] = {{"mean", d.mean}, {"standard_error", d.standard_error}, {"runs", d.runs},
+                         {"nemp_lower", d.a_lower}};
+      }
+      level["nemp_minus_mfbp_nn"] = paired;
+    }
+    levels.push_back(level);
   }
   return {{"scenario", cfg.scenario.name}, {"runs", cfg.runs}, {"seed", cfg.seed}, {"levels", levels}};
 }

@@ -134,9 +134,11 @@ void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
   // Mahalanobis base distance); "mospa" above stays the Euclidean mean OSPA [m].
   j["amota"] = t.amota();
   j["amota_unscaled"] = t.amota_unscaled();
+  j["amota_per_run"] = t.amota_per_run;
   j["rmse_range_m"] = t.rmse_range_m();
   j["rmse_velocity_mps"] = t.rmse_velocity_mps();
   j["mospa_mahalanobis"] = s.mean_ospa_mahalanobis;
+  j["mospa_mahalanobis_per_run"] = s.ospa_mahalanobis_per_run;
   j["track_scores"] = {{"gate_m", s.scoring.gate_m},
                        {"min_track_scans", s.scoring.min_track_scans},
                        {"nvt", t.nvt()},

@@ -199,6 +199,26 @@ TEST_CASE("sim aggregator: each run's mean OSPA over its evaluation scans, in ru
   CHECK(s.ospa_per_run[1] == doctest::Approx(40.0));  // (30 + 50) / 2
 }
 
+TEST_CASE("sim aggregator: each run's MOSPA (Mahalanobis) over its evaluation scans, in run order") {
+  // As above with the Mahalanobis OSPA: scan 1 (9 / 8) is left out.
+  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 2, 3, TrackScoringParams{}});
+  const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
+  std::vector<ScanMetrics> m0 = {metrics(0, 1, 1, 0), metrics(0, 1, 1, 0), metrics(0, 1, 1, 0)};
+  std::vector<ScanMetrics> m1 = m0;
+  const double run0[3] = {9.0, 2.0, 4.0}, run1[3] = {8.0, 6.0, 7.0};
+  for (std::size_t k = 0; k < 3; ++k) {
+    m0[k].ospa_mahalanobis = run0[k];
+    m1[k].ospa_mahalanobis = run1[k];
+  }
+  agg.add_run(scans, record(0, {1, 2, 3}, {0, 0, 0}), m0);
+  agg.add_run(scans, record(1, {1, 2, 3}, {0, 0, 0}), m1);
+  const Summary s = agg.summary();
+  REQUIRE(s.ospa_mahalanobis_per_run.size() == 2);
+  CHECK(s.ospa_mahalanobis_per_run[0] == doctest::Approx(3.0));  // (2 + 4) / 2
+  CHECK(s.ospa_mahalanobis_per_run[1] == doctest::Approx(6.5));  // (6 + 7) / 2
+  CHECK(s.mean_ospa_mahalanobis == doctest::Approx((2.0 + 4.0 + 6.0 + 7.0) / 4.0));
+}
+
 TEST_CASE("sim aggregator: the measurement checksum chains over delivered scans only, in order") {
   const std::vector<sc::SimScan> scans = {scan_with(1, 2), scan_with(2, 3), scan_with(3, 1)};
   Aggregator agg(SummaryHeader{"s", "t", 1, 3, 1, 1.0, 1, 3, TrackScoringParams{}});

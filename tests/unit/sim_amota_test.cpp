@@ -189,3 +189,16 @@ TEST_CASE("AMOTA: a run without targets scores 0") {
   r.track(1, 7, 1000.0, 1.0);
   CHECK(amota(r, 40) == doctest::Approx(0.0));
 }
+
+TEST_CASE("AMOTA totals: each run's AMOTA is kept in run order, the mean is theirs") {
+  TrackScoreTotals totals;
+  RunTrackScore a, b;
+  a.amota = 0.25;
+  b.amota = 0.75;
+  totals.add(a);
+  totals.add(b);
+  REQUIRE(totals.amota_per_run.size() == 2);
+  CHECK(totals.amota_per_run[0] == 0.25);
+  CHECK(totals.amota_per_run[1] == 0.75);
+  CHECK(totals.amota() == doctest::Approx(0.5));
+}

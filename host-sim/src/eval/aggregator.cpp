@@ -91,7 +91,7 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   add_counters(sum_.counters, rec.counters);
 
   std::set<std::uint32_t> found;
-  double run_ospa = 0.0;
+  double run_ospa = 0.0, run_ospa_mahalanobis = 0.0;
   std::uint32_t run_eval_scans = 0;
   for (std::uint32_t k = 1; k <= sum_.scans; ++k) {
     const ScanMetrics& m = metrics[k - 1];
@@ -106,10 +106,15 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
     if (k >= sum_.eval_first_scan && k <= sum_.eval_last_scan) {
       add_eval_scan(m);
       run_ospa += m.ospa;
+      run_ospa_mahalanobis += m.ospa_mahalanobis;
       ++run_eval_scans;
     }
   }
-  sum_.ospa_per_run.push_back(run_eval_scans > 0 ? run_ospa / static_cast<double>(run_eval_scans) : 0.0);
+  const auto run_mean = [run_eval_scans](double sum) {
+    return run_eval_scans > 0 ? sum / static_cast<double>(run_eval_scans) : 0.0;
+  };
+  sum_.ospa_per_run.push_back(run_mean(run_ospa));
+  sum_.ospa_mahalanobis_per_run.push_back(run_mean(run_ospa_mahalanobis));
   tracks_found_ += static_cast<double>(found.size());
   add_object_errors(scans, metrics);
   sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring));

@@ -71,6 +71,9 @@ struct Summary : SummaryHeader {
   /// Mean OSPA over each run's evaluation scans, in run order [m]: the
   /// per-run values paired_difference() (eval/paired.h) compares across trackers.
   std::vector<double> ospa_per_run;
+  /// MOSPA (Mahalanobis base distance) over each run's evaluation scans, in
+  /// run order [-]: seed 003's paired comparisons (sea_report.cpp).
+  std::vector<double> ospa_mahalanobis_per_run;
   std::vector<double> confirmed_mean_per_scan;  ///< confirmed tracks, mean over runs, index scan-1
   std::vector<double> confirmed_std_per_scan;   ///< ... their standard deviation over runs (population)
   std::vector<double> truths_per_scan;          ///< targets alive, mean over runs, index scan-1

@@ -236,6 +236,7 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
     if (f < min_settled_coverage) min_settled_coverage = f;
   }
   amota_sum += run.amota;
+  amota_per_run.push_back(run.amota);
   amota_unscaled_sum += run.amota_unscaled;
 }
 
