@@ -51,6 +51,16 @@ Run tracked_target(double track_x, double existence0, double existence_step) {
   return r;
 }
 
+/// Target 1 at x = 1000 m in each of 4 scans, covered by track 7 in the
+/// first two only (existence 1).
+Run half_covered_target() {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
+  r.track(1, 7, 1000.0, 1.0);
+  r.track(2, 7, 1000.0, 1.0);
+  return r;
+}
+
 MotCounts counts(const Run& r, double min_existence) {
   auto solver = std::make_unique<ScoringSolver>();
   return mot_counts(r.scans, r.est, 50.0, min_existence, *solver);
@@ -79,10 +89,7 @@ TEST_CASE("MOT counts: a false track in two of four scans gives FP 2 and MOTA 1 
 TEST_CASE("MOT counts: MOTAR charges false tracks and switches against true positives, not misses") {
   // 4 target-scans, 2 covered, one false track in scan 1: TP 2, FP 1, FN 2.
   // MOTA = 1 - (1 + 2) / 4; MOTAR = 1 - 1 / 2.
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
-  r.track(1, 7, 1000.0, 1.0);
-  r.track(2, 7, 1000.0, 1.0);
+  Run r = half_covered_target();
   r.track(1, 8, 5000.0, 1.0);
   const MotCounts c = counts(r, 0.0);
   CHECK(c.mota() == doctest::Approx(0.25));
@@ -101,19 +108,13 @@ TEST_CASE("AMOTA: a false track less confident than every true positive is thres
 TEST_CASE("AMOTA: a recall the tracker never reaches contributes 0") {
   // 4 target-scans, covered in 2: recall 1/4 and 2/4 reach MOTAR 1 - 0/2;
   // 3/4 and 1 are unreached. AMOTA = (1 + 1 + 0 + 0) / 4.
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
-  r.track(1, 7, 1000.0, 1.0);
-  r.track(2, 7, 1000.0, 1.0);
+  Run r = half_covered_target();
   CHECK(amota(r, 4) == doctest::Approx(0.5));
 }
 
 TEST_CASE("AMOTA unscaled: a recall the tracker never reaches contributes 0") {
   // As above with MOTA: recall 1/4 and 2/4 reach MOTA 1 - 2/4. (0.5 + 0.5) / 4.
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
-  r.track(1, 7, 1000.0, 1.0);
-  r.track(2, 7, 1000.0, 1.0);
+  Run r = half_covered_target();
   CHECK(amota_unscaled(r, 4) == doctest::Approx(0.25));
 }
 
@@ -145,10 +146,7 @@ TEST_CASE("AMOTA: more false tracks than true positives makes it negative") {
 }
 
 TEST_CASE("MOT counts: a target handed from one track id to another is one identity switch") {
-  Run r(4);
-  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0);
-  r.track(1, 7, 1000.0, 1.0);
-  r.track(2, 7, 1000.0, 1.0);
+  Run r = half_covered_target();
   r.track(3, 8, 1000.0, 1.0);
   r.track(4, 8, 1000.0, 1.0);
   const MotCounts c = counts(r, 0.0);
