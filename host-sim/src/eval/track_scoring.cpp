@@ -235,7 +235,6 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
     const double f = static_cast<double>(t.settled_covered_scans) / static_cast<double>(t.settled_scans);
     if (f < min_settled_coverage) min_settled_coverage = f;
   }
-  amota_sum += run.amota;
   amota_per_run.push_back(run.amota);
   amota_unscaled_sum += run.amota_unscaled;
 }
@@ -253,7 +252,11 @@ double TrackScoreTotals::aee_bearing_rad() const { return ratio(abs_bearing_err_
 double TrackScoreTotals::per_target(std::uint64_t count) const { return ratio(static_cast<double>(count), targets); }
 double TrackScoreTotals::rmse_range_m() const { return std::sqrt(ratio(sq_range_err_sum_m2, covered_scans)); }
 double TrackScoreTotals::rmse_velocity_mps() const { return std::sqrt(ratio(sq_velocity_err_sum_m2ps2, covered_scans)); }
-double TrackScoreTotals::amota() const { return ratio(amota_sum, runs); }
+double TrackScoreTotals::amota() const {
+  double sum = 0.0;  // in run order, as the runs were added
+  for (const double a : amota_per_run) sum += a;
+  return ratio(sum, runs);
+}
 double TrackScoreTotals::amota_unscaled() const { return ratio(amota_unscaled_sum, runs); }
 double TrackScoreTotals::settled_coverage() const {
   return ratio(static_cast<double>(settled_covered_scans), settled_scans);

@@ -104,9 +104,8 @@ struct TrackScoreTotals {
   std::uint64_t id_switches = 0, fragmentations = 0, track_breaks = 0;
   double abs_range_err_sum_m = 0.0, abs_bearing_err_sum_rad = 0.0;
   double sq_range_err_sum_m2 = 0.0, sq_velocity_err_sum_m2ps2 = 0.0;
-  double amota_sum = 0.0;                          ///< sum of the runs' AMOTA
   double amota_unscaled_sum = 0.0;                 ///< sum of the runs' unscaled AMOTA
-  std::vector<double> amota_per_run;               ///< each run's AMOTA, in run order (paired comparisons)
+  std::vector<double> amota_per_run;               ///< each run's AMOTA, in run order (amota(), paired comparisons)
   /// Settled coverage (kSettleScans): pooled scans, the worst (run, target)
   /// fraction, and per target id the pooled scans over runs.
   std::uint64_t settled_scans = 0, settled_covered_scans = 0;

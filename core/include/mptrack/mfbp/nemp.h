@@ -101,9 +101,9 @@ class NempState {
   const NempParams<T>& params() const { return params_; }
 
   /// Evidence of the scan just stored at window index k: stored measurement
-  /// c is input measurement orig_index[c]. ev == nullptr: no patches. Marks
-  /// the slot's birth veto (ScanSlot::kBirthVetoed, a slot field, so the veto shifts into
-  /// history with the scan).
+  /// c is input measurement orig_index[c]. ev == nullptr: no patches. The
+  /// birth veto goes into the slot (ScanSlot::kBirthVetoed), so it moves
+  /// into history with the scan.
   template <class Slot>
   void store_scan(std::size_t k, Slot& s, const Evidence* ev) {
     for (std::size_t c = 0; c < s.count; ++c) {
