@@ -158,6 +158,17 @@ void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
   nlohmann::ordered_json by_target = nlohmann::ordered_json::object();
   for (const auto& [id, v] : t.settled_by_target) by_target[std::to_string(id)] = t.settled_coverage_of(id);
   j["track_scores"]["coverage_from_birth5_by_target"] = by_target;
+  j["track_scores"]["by_target"] = track_scores_by_target_json(t);
+}
+
+nlohmann::ordered_json track_scores_by_target_json(const TrackScoreTotals& t) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [id, d] : t.delay_by_target) {
+    out[std::to_string(id)] = {{"ttl_scans", t.ttl_scans_of(id)},
+                               {"never_tracked", d.never_tracked},
+                               {"coverage_from_birth5", t.settled_coverage_of(id)}};
+  }
+  return out;
 }
 
 nlohmann::ordered_json object_rmse_json(const Summary& s) {

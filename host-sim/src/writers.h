@@ -42,6 +42,10 @@ nlohmann::ordered_json summary_to_json(const Summary& s);
 nlohmann::ordered_json object_rmse_json(const Summary& s);
 /// Adds the track scores (track_scoring.h) of `s` to its summary.json object.
 void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j);
+/// Per target id over runs (summary.json and compare.json "by_target"):
+/// ttl_scans (confirmation delay of the runs it was tracked in),
+/// never_tracked (runs) and coverage_from_birth5.
+nlohmann::ordered_json track_scores_by_target_json(const TrackScoreTotals& t);
 void write_summary_json(const Summary& s, const std::string& path);
 
 }  // namespace mptrack::sim

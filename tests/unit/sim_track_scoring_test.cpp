@@ -320,3 +320,30 @@ TEST_CASE("track scoring: a kept pair is released when its track ends, and the n
   CHECK(t.track_breaks == 1);
   CHECK(t.covered_scans == 4);
 }
+
+TEST_CASE("track scoring totals: the confirmation delay per target id averages the runs it was tracked in") {
+  // Run 1: target 1 (alive 1..8) first covered at scan 4 (delay 3), target 2
+  // (alive 1..8) at scan 2 (delay 1). Run 2: target 1 at scan 8 (delay 7),
+  // target 2 never. Target 1: (3 + 7) / 2 = 5, never 0; target 2: 1, never 1.
+  // Pooled: (3 + 1 + 7) / 3 tracked.
+  TrackScoreTotals t;
+  for (const std::uint32_t first1 : {4u, 8u}) {
+    Run r(8);
+    for (std::uint32_t k = 1; k <= 8; ++k) {
+      r.target(k, 1, 1000.0, 0.0);
+      r.target(k, 2, 5000.0, 0.0);
+    }
+    for (std::uint32_t k = first1; k <= 8; ++k) r.track(k, 7, 1001.0, 0.0);
+    if (first1 == 4) {
+      for (std::uint32_t k = 2; k <= 8; ++k) r.track(k, 8, 5001.0, 0.0);
+    }
+    t.add(score_run(r.scans, r.est, gate(50.0)));
+  }
+  REQUIRE(t.delay_by_target.size() == 2);
+  CHECK(t.ttl_scans_of(1) == doctest::Approx(5.0));
+  CHECK(t.delay_by_target.at(1).never_tracked == 0);
+  CHECK(t.ttl_scans_of(2) == doctest::Approx(1.0));
+  CHECK(t.delay_by_target.at(2).never_tracked == 1);
+  CHECK(t.ttl_scans() == doctest::Approx(11.0 / 3.0));
+  CHECK(t.ttl_scans_of(3) == doctest::Approx(0.0));  // no such target
+}

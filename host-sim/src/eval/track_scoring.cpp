@@ -215,9 +215,15 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
     ++targets;
     alive_scans += t.alive_scans;
     covered_scans += t.covered_scans;
+    TargetDelay& delay = delay_by_target[t.target_id];
     if (t.first_covered_scan >= 0) {
+      const std::uint64_t latency = static_cast<std::uint64_t>(t.first_covered_scan) - t.birth_scan;
       ++targets_tracked;
-      latency_scans += static_cast<std::uint64_t>(t.first_covered_scan) - t.birth_scan;
+      latency_scans += latency;
+      ++delay.tracked;
+      delay.latency_scans += latency;
+    } else {
+      ++delay.never_tracked;
     }
     id_switches += t.id_switches;
     fragmentations += t.fragmentations;
@@ -260,6 +266,10 @@ double TrackScoreTotals::amota() const {
 double TrackScoreTotals::amota_unscaled() const { return ratio(amota_unscaled_sum, runs); }
 double TrackScoreTotals::settled_coverage() const {
   return ratio(static_cast<double>(settled_covered_scans), settled_scans);
+}
+double TrackScoreTotals::ttl_scans_of(std::uint32_t target_id) const {
+  const auto it = delay_by_target.find(target_id);
+  return it == delay_by_target.end() ? 0.0 : ratio(static_cast<double>(it->second.latency_scans), it->second.tracked);
 }
 double TrackScoreTotals::settled_coverage_of(std::uint32_t target_id) const {
   const auto it = settled_by_target.find(target_id);

@@ -111,6 +111,12 @@ struct TrackScoreTotals {
   std::uint64_t settled_scans = 0, settled_covered_scans = 0;
   double min_settled_coverage = 1.0;  ///< over (run, target) pairs alive past the settle scans
   std::map<std::uint32_t, std::pair<std::uint64_t, std::uint64_t>> settled_by_target;  ///< id -> (covered, scans)
+  /// Per target id over runs: the confirmation delay of the runs it was
+  /// tracked in, and the runs it never was (issue 18: a birth inside clutter).
+  struct TargetDelay {
+    std::uint64_t latency_scans = 0, tracked = 0, never_tracked = 0;
+  };
+  std::map<std::uint32_t, TargetDelay> delay_by_target;
 
   void add(const RunTrackScore& run);
   double nvt() const;                ///< targets with a valid track, mean per run
@@ -126,6 +132,7 @@ struct TrackScoreTotals {
   double amota_unscaled() const;     ///< unscaled AMOTA, mean over runs
   double settled_coverage() const;   ///< settled covered / settled alive target-scans (pooled)
   double settled_coverage_of(std::uint32_t target_id) const;  ///< the same for one target id over runs
+  double ttl_scans_of(std::uint32_t target_id) const;  ///< ttl_scans() of one target id over runs (0 if never tracked)
 };
 
 }  // namespace mptrack::sim
