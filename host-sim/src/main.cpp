@@ -33,7 +33,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     for (const Subcommand& c : commands) {
-      if (c.app->parsed()) return c.run(options);
+      if (!c.app->parsed()) continue;
+      check_top_level_options(app, c);
+      return c.run(options);
     }
     return run_default_command(options);
   } catch (const std::exception& e) {

@@ -205,4 +205,25 @@ TEST_CASE("cli: gnn and mfbp refuse seed 001's Cartesian scenarios instead of ru
   expect_refused("--scenario seed001-s1 --tracker mfbp-filter --runs 1", {"mfbp-filter models polar", "cbmember"});
 }
 
+TEST_CASE("cli: a top-level option a subcommand does not read is refused, not silently dropped") {
+  // compare has its own --scenario (a name or a file); the default command's
+  // --scenario-file reached it through the fallthrough and compare ran
+  // seed000-s2 instead of the user's file.
+  const fs::path f = scenario_file(scratch(), "plain", [](nlohmann::json&) {});
+  expect_refused("compare --scenario-file " + f.string() + " --runs 1 --trackers gnn",
+                 {"--scenario-file is not an option of `compare`", "--scenario takes"});
+  expect_refused("table5 --runs 1 --tracker gnn", {"--tracker is not an option of `table5`"});
+}
+
+TEST_CASE("cli: compare reads a scenario file through --scenario") {
+  const fs::path f = scenario_file(scratch(), "named", [](nlohmann::json& s) { s["name"] = "my-own-scene"; });
+  const fs::path out = scratch() / "cmp";
+  fs::remove_all(out);
+  const CliResult r = run_sim("compare --scenario " + f.string() + " --runs 1 --trackers gnn --no-plot", out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(out / "compare.json");
+  CHECK(nlohmann::json::parse(in)["scenario"] == "my-own-scene");
+}
+
 TEST_CASE("cli: cleanup") { fs::remove_all(scratch()); }

@@ -84,7 +84,8 @@ TEST_CASE("compare: a tiny seed001 run gives one row per tracker, in order, with
     CHECK(row["latency_us"]["samples"] == 12);  // 2 runs x 6 scans
     CHECK(row["ospa_per_scan"].size() == 6);
   }
-  // Each of the three markdown tables (metrics, track scores, seed 003 metrics) has exactly one line per tracker;
+  // Each of the four markdown tables (metrics, track scores, track scores per target (<= 8 targets), seed 003
+  // metrics) has exactly one line per tracker;
   // the paired-difference table has one per tracker after the first (the reference).
   std::ifstream md(cfg.out_dir + "/compare.md");
   std::string line;
@@ -92,7 +93,7 @@ TEST_CASE("compare: a tiny seed001 run gives one row per tracker, in order, with
   while (std::getline(md, line)) {
     for (const auto& t : cfg.trackers) rows += line.rfind("| " + t + " |", 0) == 0 ? 1 : 0;
   }
-  CHECK(rows == 3 * 4 + (4 - 1));
+  CHECK(rows == 4 * 4 + (4 - 1));
   CHECK(std::filesystem::exists(cfg.out_dir + "/ospa.svg"));
 }
 

@@ -1,4 +1,5 @@
 // Helpers shared by several subcommands; see commands.h.
+#include <algorithm>
 #include <exception>
 #include <stdexcept>
 
@@ -42,6 +43,19 @@ bool load_adc_scenario(const std::string& name, const std::string& file, adc::Ad
     return true;
   }
   return adc::builtin_adc_scenario(name, out);
+}
+
+void check_top_level_options(const CLI::App& app, const Subcommand& c) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->count() == 0 || opt->get_lnames().empty()) continue;
+    const std::string flag = "--" + opt->get_lnames().front();
+    if (std::find(c.reads.begin(), c.reads.end(), flag) != c.reads.end()) continue;
+    std::string text = flag + " is not an option of `" + c.app->get_name() + "`";
+    if (flag == "--scenario-file" && c.app->get_option_no_throw("--scenario") != nullptr) {
+      text += " (its --scenario takes a built-in name or a scenario JSON file)";
+    }
+    throw std::runtime_error(text + "; see `mptrack-sim " + c.app->get_name() + " --help`");
+  }
 }
 
 }  // namespace mptrack::sim

@@ -114,7 +114,7 @@ Subcommand add_compare_command(CLI::App& app) {
       "one line per tracker). Progress on stderr.\n"
       "Example: mptrack-sim compare --scenario seed001-s2 --runs 20 --out out/cmp-s2");
   add_options(*cmd, *a);
-  return Subcommand{cmd, [a](const RunOptions& o) { return run_compare_command(*a, o); }};
+  return Subcommand{cmd, [a](const RunOptions& o) { return run_compare_command(*a, o); }, {"--no-plot", "--no-progress"}};
 }
 
 }  // namespace mptrack::sim

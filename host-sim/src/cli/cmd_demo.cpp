@@ -47,9 +47,11 @@ Subcommand add_demo_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("demo", "seed004-drones end to end from raw ADC frames at 10 Hz, human-readable "
                                              "summary (out/demo); --measurement-level: seed000-s2, 180 scans");
   cmd->add_flag("--measurement-level", *measurement_level, "run the seed000-s2 measurement-level demo instead");
-  return Subcommand{cmd, [measurement_level](const RunOptions& o) {
+  return Subcommand{cmd,
+                    [measurement_level](const RunOptions& o) {
                       return *measurement_level ? run_measurement_demo(o) : run_adc_demo(o);
-                    }};
+                    },
+                    {"--tracker", "--no-plot", "--no-progress"}};
 }
 
 }  // namespace mptrack::sim

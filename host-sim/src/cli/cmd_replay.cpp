@@ -61,7 +61,9 @@ Subcommand add_replay_command(CLI::App& app) {
       "summary.json and plot.svg like a run. `mptrack-sim --write-detections` exports a run's detections.\n"
       "Example: mptrack-sim replay --detections rec.csv --scenario seed000-s2 --tracker mfbp --out out/rec");
   cmd->add_option("--detections", *detections, "detections file: CSV, or JSON if the name ends in .json")->required()->check(CLI::ExistingFile);
-  return Subcommand{cmd, [detections](const RunOptions& o) { return run_replay(*detections, o); }};
+  return Subcommand{cmd, [detections](const RunOptions& o) { return run_replay(*detections, o); },
+                    {"--scenario", "--scenario-file", "--tracker", "--out", "--csv-runs", "--mfbp-param", "--scans",
+                     "--clutter-scale", "--no-plot", "--no-progress"}};
 }
 
 }  // namespace mptrack::sim

@@ -130,7 +130,7 @@ Subcommand add_table5_command(CLI::App& app) {
   cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--scans", a->scans, "use only the first N scans (0 = all 340)");
   cmd->add_option("--mfbp-param", a->mfbp_params, kMfbpParamHelp);
-  return Subcommand{cmd, [a](const RunOptions& o) { return run_table5(*a, !o.no_progress); }};
+  return Subcommand{cmd, [a](const RunOptions& o) { return run_table5(*a, !o.no_progress); }, {"--no-progress"}};
 }
 
 }  // namespace mptrack::sim

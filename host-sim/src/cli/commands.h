@@ -45,7 +45,17 @@ struct RunOptions {
 struct Subcommand {
   CLI::App* app = nullptr;
   std::function<int(const RunOptions&)> run;
+  /// The top-level options (RunOptions) it reads, e.g. "--no-progress";
+  /// any other one given with it is refused (check_top_level_options).
+  std::vector<std::string> reads = {};
 };
+
+/// Throws std::runtime_error if a top-level option was given with
+/// subcommand c that c does not read. Through CLI11's fallthrough,
+/// `compare --scenario-file F` parses as the default command's
+/// --scenario-file, which compare never looks at: it would run its own
+/// default scenario on the user's behalf without a word.
+void check_top_level_options(const CLI::App& app, const Subcommand& c);
 
 // cmd_run.cpp: the default command.
 void add_run_options(CLI::App& app, RunOptions& options);
