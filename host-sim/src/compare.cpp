@@ -251,6 +251,7 @@ nlohmann::ordered_json compare_to_json(const CompareResult& r) {
                       {"samples", x.latency.count}}},
                     {"step_errors", x.step_errors},
                     {"steps_not_ok", x.steps_not_ok()},
+                    {"steps_mixture_truncated", x.steps_truncating},
                     {"measurement_checksum", hex64(x.measurement_checksum)},
                     {"track_scores", track_scores_json(x.track_scores)},
                     {"seed003_metrics", seed003_metrics_json(x)},

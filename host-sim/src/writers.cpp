@@ -103,6 +103,7 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
   j["step_errors"] = s.step_errors;
   j["steps_partial"] = s.steps_partial;
   j["steps_capacity_exceeded"] = s.steps_capacity;
+  j["steps_mixture_truncated"] = s.steps_truncating;
   j["step_status"] = s.step_status;
   const TrackerCounters& c = s.counters;
   j["counters"] = nlohmann::ordered_json::object();

@@ -9,7 +9,11 @@
 
 #include "eval/aggregator.h"
 #include "eval/scan_evaluator.h"
+#include "mptrack/scenario/builtin.h"
+#include "run/run_loop.h"
 #include "run/run_record.h"
+#include "run/scan_source.h"
+#include "run/truncate.h"
 #include "sim_test_truth.h"
 #include "writers.h"
 
@@ -283,4 +287,55 @@ TEST_CASE("sim aggregator: per-object RMSE over matched evaluation scans, sorted
   CHECK(s.objects_never_matched == 1);
   CHECK(s.object_rmse_quantile(0.5) == doctest::Approx(1.0));   // nearest rank: ceil(0.5 * 2) = 1st
   CHECK(s.object_rmse_quantile(0.9) == doctest::Approx(std::sqrt(12.5)));
+}
+
+namespace {
+
+/// Truncates its mixture on the steps listed (1-based) and on flush when
+/// asked; nothing else.
+class TruncatingTracker final : public TrackerAdapter {
+ public:
+  TruncatingTracker(std::vector<std::uint32_t> steps, bool on_flush) : steps_(std::move(steps)), on_flush_(on_flush) {}
+  std::string init(const TrackerSetup&) override { return ""; }
+  Status step(const sc::SimScan&, std::vector<EstimateOut>&) override {
+    ++n_;
+    for (const std::uint32_t k : steps_) c_.mixture_truncated += k == n_ ? 7u : 0u;  // 7 components at once
+    return Status::kOk;
+  }
+  Status flush(std::vector<EstimateOut>&) override {
+    if (on_flush_) ++c_.mixture_truncated;
+    return Status::kOk;
+  }
+  TrackerCounters counters() const override { return c_; }
+
+ private:
+  std::vector<std::uint32_t> steps_;
+  bool on_flush_;
+  std::uint32_t n_ = 0;
+  TrackerCounters c_{};
+};
+
+}  // namespace
+
+TEST_CASE("sim run loop: steps whose mixture truncation grew are counted once each, flush included") {
+  sc::ScenarioSpec spec;
+  REQUIRE(sc::builtin_scenario("seed000-s2", spec));
+  truncate_scans(spec, 5);
+  MeasurementSource source(spec, 1, 1.0);
+  source.begin_run(0);
+  TruncatingTracker a({2, 4}, true);
+  const RunRecord ra = run_tracker(source, a, 0, nullptr);
+  CHECK(ra.steps_truncating == 3);  // steps 2 and 4 (7 components each) and flush
+  CHECK(ra.counters.mixture_truncated == 15);
+  TruncatingTracker b({5}, false);
+  const RunRecord rb = run_tracker(source, b, 1, nullptr);
+  CHECK(rb.steps_truncating == 1);
+
+  Aggregator agg(SummaryHeader{"s", "t", 2, 5, 1, 1.0, 1, 5, TrackScoringParams{}});
+  const std::vector<ScanMetrics> m(5);
+  agg.add_run(source.scans(), ra, m);
+  agg.add_run(source.scans(), rb, m);
+  const Summary s = agg.summary();
+  CHECK(s.steps_truncating == 4);
+  CHECK(summary_to_json(s)["steps_mixture_truncated"] == 4);
 }

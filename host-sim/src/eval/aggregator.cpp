@@ -88,6 +88,7 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   }
   delivered_ += rec.delivered.size();
   for (const Status st : rec.statuses) sum_.count_status(st);
+  sum_.steps_truncating += rec.steps_truncating;
   add_counters(sum_.counters, rec.counters);
 
   std::set<std::uint32_t> found;

@@ -86,6 +86,7 @@ struct Summary : SummaryHeader {
   std::uint64_t step_errors = 0;        ///< step()/flush() calls returning an error (not kOk, kPartial, kCapacityExceeded)
   std::uint64_t steps_partial = 0;      ///< kPartial: some measurements rejected (see counters)
   std::uint64_t steps_capacity = 0;     ///< kCapacityExceeded: an internal cap was hit (see counters)
+  std::uint64_t steps_truncating = 0;   ///< step()/flush() calls whose mixture_truncated grew (RunRecord)
   std::map<std::string, std::uint64_t> step_status;  ///< every step()/flush() status by name
   TrackerCounters counters;             ///< summed over runs
   std::uint64_t measurement_checksum = kChecksumSeed;  ///< of every measurement the tracker was given, in order

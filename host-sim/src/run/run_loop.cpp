@@ -74,17 +74,21 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
   const FrameInput input = tracker.frame_input();
   source.deliver([&](const scenario::SimScan& s, const RawFrame* frame) {
     rec.delivered.push_back(s.scan);
+    const std::uint64_t truncated_before = tracker.counters().mixture_truncated;
     const auto t0 = std::chrono::steady_clock::now();
     const Status st = frame != nullptr ? tracker.step_frame(*frame, s, finals) : tracker.step(s, finals);
     const auto t1 = std::chrono::steady_clock::now();
+    if (tracker.counters().mixture_truncated > truncated_before) ++rec.steps_truncating;
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     rec.latency_us[s.scan - 1] = us;
     rec.statuses.push_back(st);
     if (progress != nullptr) progress->tick();
     return us;
   }, input);
+  const std::uint64_t truncated_before = tracker.counters().mixture_truncated;
   rec.statuses.push_back(tracker.flush(finals));
   rec.counters = tracker.counters();
+  if (rec.counters.mixture_truncated > truncated_before) ++rec.steps_truncating;
   rec.by_scan = estimates_by_scan(finals, rec.delivered, n);
   return rec;
 }

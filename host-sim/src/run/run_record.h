@@ -19,6 +19,10 @@ struct RunRecord {
   std::vector<std::uint32_t> delivered;  ///< scans handed to the tracker, in order: step i consumed scan delivered[i]
   std::vector<Status> statuses;          ///< every step() status, then flush()'s
   TrackerCounters counters;              ///< the tracker's counters at the end of the run
+  /// step()/flush() calls during which mixture_truncated grew (a GM filter's
+  /// J_max truncation: counted, not an error status; issue 18 asks for it on
+  /// under 1 % of steps).
+  std::uint64_t steps_truncating = 0;
 };
 
 /// Puts a tracker's finalised estimates at their scans. A tracker numbers
