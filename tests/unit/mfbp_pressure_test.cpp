@@ -103,3 +103,67 @@ TEST_CASE("mfbp birth inside clutter: amplitude tail by hand") {
   // At the threshold the tail is 1.
   CHECK(mfbp::amplitude_tail(1.0, 1.0, 5.0, 1) == doctest::Approx(1.0));
 }
+
+TEST_CASE("mfbp one-point birth: state at the point, zero velocity under the v_max box prior") {
+  mfbp::Vec4<double> x;
+  mfbp::Mat4<double> P;
+  // On the x axis (az 0): J = diag(1, r), so P_pos = diag(sigma_r^2, (r sigma_az)^2).
+  mfbp::one_point_state(30000.0, 0.0, 20.0, 0.01, 120.0, 60.0, x, P);
+  CHECK(x(0) == doctest::Approx(30000.0));
+  CHECK(x(1) == 0.0);
+  CHECK(x(2) == doctest::Approx(0.0));
+  CHECK(x(3) == 0.0);
+  CHECK(P(0, 0) == doctest::Approx(400.0));
+  CHECK(P(2, 2) == doctest::Approx(90000.0));
+  CHECK(P(1, 1) == doctest::Approx(120.0 * 120.0 / 3.0));
+  CHECK(P(3, 3) == doctest::Approx(60.0 * 60.0 / 3.0));
+  CHECK(P(0, 1) == 0.0);
+  CHECK(P(1, 2) == 0.0);
+  CHECK(P(0, 2) == doctest::Approx(0.0).epsilon(1e-9));
+}
+
+namespace {
+
+/// The filter on a known map with one dense component (30 per scan, CNR 4)
+/// at 30 km, 0.6 rad and no uniform clutter beyond the floor.
+MfbpParams<float> known_component_params(float single_point_tail) {
+  MfbpParams<float> p = filter_params();
+  p.clutter_mode = ClutterMode::kKnownMap;
+  p.known_clutter.uniform_rate_per_scan = 0.0f;
+  p.known_clutter.num_components = 1;
+  auto& c = p.known_clutter.components[0];
+  c.rate_per_scan = 30.0f;
+  c.mean << 30000.0f, 0.6f;
+  c.covariance << 500.0f * 500.0f, 0.0f, 0.0f, 0.05f * 0.05f;
+  c.cnr = 4.0f;
+  p.birth_single_point_tail = single_point_tail;
+  return p;
+}
+
+/// One scan: a single detection at the component's centre of amplitude m.
+std::uint64_t births_after_one_point(float single_point_tail, float m) {
+  static MfbpTracker<float, PressureCaps<4>> trk;
+  REQUIRE(trk.init(known_component_params(single_point_tail)) == Status::kOk);
+  Scan<float, 16> scan;
+  scan.time_us = 1000000u;
+  Measurement<float> z;
+  z.range_m = 30000.0f;
+  z.azimuth_rad = 0.6f;
+  z.amplitude = m;
+  REQUIRE(scan.measurements.push_back(z) == Status::kOk);
+  (void)trk.step(scan);
+  return trk.counters().tracks_born;
+}
+
+}  // namespace
+
+TEST_CASE("mfbp one-point birth inside clutter: a strong lone detection starts a track only when enabled") {
+  // d = 0.715 (seed 000), varsigma = 1 + CNR = 5: m = 5 gives a tail of
+  // exp(-(25 - 0.511) / 5) = 0.0075 < 0.1. Without a second point no pair
+  // can form, so with the one-point birth off nothing is born.
+  CHECK(births_after_one_point(0.1f, 5.0f) == 1);
+  CHECK(births_after_one_point(0.0f, 5.0f) == 0);
+  // m = 2: tail exp(-(4 - 0.511) / 5) = 0.50, not below 0.1 (nor below the
+  // pair test's 0.2): no birth.
+  CHECK(births_after_one_point(0.1f, 2.0f) == 0);
+}

@@ -218,6 +218,13 @@ struct MfbpParams {
                                       ///< holds it: P(u > m^2 | u > d^2) at the component's mean
                                       ///< CNR (track_birth.h, amplitude_tail; docs/algorithms/
                                       ///< mfbp.md §Birth). 0 = off (the birth path of before) [-]
+  T birth_single_point_tail = T(0.1);  ///< Ours. A measurement inside Gaussian clutter whose
+                                      ///< amplitude tail (as birth_amplitude_tail) is below
+                                      ///< this, outside every track's gate, starts a track
+                                      ///< alone (one_point_state), within the
+                                      ///< birth_max_in_clutter left after the pairs
+                                      ///< (docs/algorithms/mfbp.md §Birth). At most
+                                      ///< birth_amplitude_tail; 0 = off [-]
   std::size_t birth_max_in_clutter = 3;  ///< Ours. Births per window whose points passed only
                                          ///< by that amplitude test (inside Gaussian clutter)
   T confirm_threshold = T(0.75);      ///< confirm when b_s(1) >= this at any window scan [-]
@@ -385,6 +392,8 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "birth_max_per_window", check_at_least(birth_max_per_window, 1));
   MPTRACK_CHECK_PARAM(w, "unexplained_threshold", check_open_probability(unexplained_threshold));
   MPTRACK_CHECK_PARAM(w, "birth_max_component_share", check_range(birth_max_component_share, T(0), T(1)));
+  MPTRACK_CHECK_PARAM(w, "birth_single_point_tail",
+                      check(birth_single_point_tail >= T(0) && !(birth_single_point_tail > birth_amplitude_tail)));
   MPTRACK_CHECK_PARAM(w, "birth_amplitude_tail",
                       check(birth_amplitude_tail >= T(0) && birth_amplitude_tail < T(1)));
   MPTRACK_CHECK_PARAM(w, "confirm_threshold", check_open_probability(confirm_threshold));

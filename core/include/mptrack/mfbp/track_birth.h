@@ -89,6 +89,23 @@ void two_point_state(T r1, T az1, T r2, T az2, T dt_s, T sigma_r, T sigma_az, T 
   }
 }
 
+/// One-point state (docs/algorithms/mfbp.md §Birth, one-point birth inside
+/// clutter): position y, P_pos = J R J^T at y; velocity 0 with the v_max box
+/// prior v_max^2 / 3 per axis, uncorrelated with the position.
+template <class T>
+void one_point_state(T r, T az, T sigma_r, T sigma_az, T v_max_x, T v_max_y, Vec4<T>& x, Mat4<T>& P) {
+  const Vec2<T> p = model::cartesian_of_polar(r, az);
+  const Mat2<T> Pp = cartesian_position_covariance(r, az, sigma_r, sigma_az);
+  x << p(0), T(0), p(1), T(0);
+  P.setZero();
+  P(0, 0) = Pp(0, 0);
+  P(0, 2) = Pp(0, 1);
+  P(2, 0) = Pp(1, 0);
+  P(2, 2) = Pp(1, 1);
+  P(1, 1) = v_max_x * v_max_x / T(3);
+  P(3, 3) = v_max_y * v_max_y / T(3);
+}
+
 /// IG at birth (docs/algorithms/mfbp.md §Departures from the paper): a = shape,
 /// b = factor mean(m^2 - d^2).
 template <class T>

@@ -79,6 +79,10 @@ class TrackSpawner {
       }
       start_track(cand[b], store, tracks, p, first_new, next_id, counters);
     }
+    if (p.birth_single_point_tail > T(0) && in_clutter < p.birth_max_in_clutter) {
+      nc = single_points(n, store, tracks, cl, p, mc, p.birth_max_in_clutter - in_clutter, cand);
+      for (std::size_t b = 0; b < nc; ++b) start_track(cand[b], store, tracks, p, first_new, next_id, counters);
+    }
   }
 
   /// Unexplained by the tracks at the last spawn() and not used by a birth.
@@ -91,6 +95,7 @@ class TrackSpawner {
     T score = T(0);
     std::uint16_t s1 = 0, j1 = 0, s2 = 0, j2 = 0;
     bool in_clutter = false;  ///< a point passed only by the amplitude test (kInClutter)
+    bool single = false;      ///< one-point birth (s1 == s2, j1 == j2)
   };
   /// Marks of unexplained_: not a candidate, a candidate, a candidate
   /// inside Gaussian clutter by its amplitude alone.
@@ -134,6 +139,13 @@ class TrackSpawner {
   static bool amplitude_stands_out(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
                                    const MfbpParams<T>& p, int n_order) {
     if (!(p.birth_amplitude_tail > T(0)) || !p.amplitude.use_amplitude) return false;
+    return amplitude_tail_in_clutter(r, az, m, k_ref, cl, p, n_order) < p.birth_amplitude_tail;
+  }
+
+  /// The largest amplitude_tail of m under the Gaussian components whose
+  /// gate holds (r, az) (see amplitude_stands_out); 1 if none gates it.
+  static T amplitude_tail_in_clutter(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
+                                     const MfbpParams<T>& p, int n_order) {
     const T d = p.amplitude.threshold;
     bool gated = false;
     T tail_max = T(0);
@@ -146,7 +158,61 @@ class TrackSpawner {
       tail_max = tail > tail_max ? tail : tail_max;
     };
     for_each_gaussian_component(k_ref, cl, p, consider);
-    return gated && tail_max < p.birth_amplitude_tail;
+    return gated ? tail_max : T(1);
+  }
+
+  /// One-point births inside clutter (docs/algorithms/mfbp.md §Birth): up to
+  /// `room` unpaired window points that passed the amplitude test inside a
+  /// component (kInClutter) with a tail below birth_single_point_tail, the
+  /// strongest first (ties: earlier scan, lower index). Marked used by a birth.
+  std::size_t single_points(std::size_t n, Store& store, const Tracks& tracks, const ClutterTable<T, Caps>& cl,
+                            const MfbpParams<T>& p, const ModelConstants<T>& mc, std::size_t room,
+                            Candidates& cand) const {
+    const int n_order = mc.n_order;
+    if (room > kMaxCandidates) room = kMaxCandidates;
+    const std::size_t k_ref = store.n_win() > 0 ? store.n_win() - 1 : 0;
+    std::size_t nc = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t si = store.n_hist() + k;
+      const ScanSlot<T, Caps>& s = store.at(si);
+      for (std::size_t j = 0; j < s.count; ++j) {
+        if (unexplained_[si][j] != kInClutter || !birth_point(store, si, j)) continue;
+        if (!(amplitude_tail_in_clutter(s.r[j], s.az[j], s.amp[j], k_ref, cl, p, n_order) <
+              p.birth_single_point_tail)) {
+          continue;
+        }
+        if (in_a_track_gate(s.r[j], s.az[j], k, tracks, p, mc)) continue;
+        if (nc == room && !(s.amp[j] > cand[nc - 1].score)) continue;
+        Candidate c;
+        c.score = s.amp[j];
+        c.s1 = c.s2 = static_cast<std::uint16_t>(si);
+        c.j1 = c.j2 = static_cast<std::uint16_t>(j);
+        c.in_clutter = c.single = true;
+        std::size_t pos = nc == room ? nc - 1 : nc++;
+        while (pos > 0 && c.score > cand[pos - 1].score) {
+          cand[pos] = cand[pos - 1];
+          --pos;
+        }
+        cand[pos] = c;
+      }
+    }
+    for (std::size_t b = 0; b < nc; ++b) store.at(cand[b].s1).set_used_by_birth(cand[b].j1, true);
+    return nc;
+  }
+
+  /// Inside the chi^2 gate (gate_chi2) of a live track present on window scan k.
+  static bool in_a_track_gate(T r, T az, std::size_t k, const Tracks& tracks, const MfbpParams<T>& p,
+                              const ModelConstants<T>& mc) {
+    for (const auto& t : tracks) {
+      if (!t.alive || k < t.first) continue;
+      Vec2<T> z_hat;
+      Mat2<T> Sz;
+      Mat42<T> Cxz;
+      if (!cubature_polar_moments(t.xs[k], t.Ps[k].get(), z_hat, Sz, Cxz)) continue;
+      const model::Mahalanobis2<T> gate(Sz + mc.R);
+      if (gate.valid() && gate.distance2(r - z_hat(0), model::wrap_angle(az - z_hat(1))) <= p.gate_chi2) return true;
+    }
+    return false;
   }
 
   /// New scan: a measurement inside the chi^2 gate of a track present on
@@ -293,8 +359,13 @@ class TrackSpawner {
     const ScanSlot<T, Caps>& b = store.at(c.s2);
     TrackSlot<T, Caps>& t = tracks[slot];
     t.start(next_id++, c.s2 - store.n_hist(), p.visibility_at_birth);
-    two_point_state(a.r[c.j1], a.az[c.j1], b.r[c.j2], b.az[c.j2], dt_s<T>(a.time_us, b.time_us),
-                    p.noise.range_std_m, p.noise.azimuth_std_rad, p.v_max_x_mps, p.v_max_y_mps, t.x0, t.P0);
+    if (c.single) {
+      one_point_state(b.r[c.j2], b.az[c.j2], p.noise.range_std_m, p.noise.azimuth_std_rad, p.v_max_x_mps,
+                      p.v_max_y_mps, t.x0, t.P0);
+    } else {
+      two_point_state(a.r[c.j1], a.az[c.j1], b.r[c.j2], b.az[c.j2], dt_s<T>(a.time_us, b.time_us),
+                      p.noise.range_std_m, p.noise.azimuth_std_rad, p.v_max_x_mps, p.v_max_y_mps, t.x0, t.P0);
+    }
     t.ig0 = birth_snr_belief(a.amp[c.j1], b.amp[c.j2], p.amplitude.threshold, p.ig_birth_shape,
                              p.ig_birth_scale_factor);
     t.t0_us = b.time_us;
