@@ -200,16 +200,27 @@ class TrackSpawner {
     return nc;
   }
 
+  /// Predicted measurement of track t on window scan k and the covariance
+  /// S_z + R of its chi^2 gate; false if t is absent at k or the cubature
+  /// fails. One cubature.
+  static bool track_gate(const TrackSlot<T, Caps>& t, std::size_t k, const ModelConstants<T>& mc, Vec2<T>& z_hat,
+                         Mat2<T>& S) {
+    if (!t.alive || k < t.first) return false;
+    Mat2<T> Sz;
+    Mat42<T> Cxz;
+    if (!cubature_polar_moments(t.xs[k], t.Ps[k].get(), z_hat, Sz, Cxz)) return false;
+    S = Sz + mc.R;
+    return true;
+  }
+
   /// Inside the chi^2 gate (gate_chi2) of a live track present on window scan k.
   static bool in_a_track_gate(T r, T az, std::size_t k, const Tracks& tracks, const MfbpParams<T>& p,
                               const ModelConstants<T>& mc) {
     for (const auto& t : tracks) {
-      if (!t.alive || k < t.first) continue;
       Vec2<T> z_hat;
-      Mat2<T> Sz;
-      Mat42<T> Cxz;
-      if (!cubature_polar_moments(t.xs[k], t.Ps[k].get(), z_hat, Sz, Cxz)) continue;
-      const model::Mahalanobis2<T> gate(Sz + mc.R);
+      Mat2<T> S;
+      if (!track_gate(t, k, mc, z_hat, S)) continue;
+      const model::Mahalanobis2<T> gate(S);
       if (gate.valid() && gate.distance2(r - z_hat(0), model::wrap_angle(az - z_hat(1))) <= p.gate_chi2) return true;
     }
     return false;
@@ -220,12 +231,10 @@ class TrackSpawner {
   void mark_gated(const ScanSlot<T, Caps>& s, std::size_t si, std::size_t k, const Tracks& tracks,
                   const MfbpParams<T>& p, const ModelConstants<T>& mc) {
     for (const auto& t : tracks) {
-      if (!t.alive || k < t.first) continue;
       Vec2<T> z_hat;
-      Mat2<T> Sz;
-      Mat42<T> Cxz;
-      if (!cubature_polar_moments(t.xs[k], t.Ps[k].get(), z_hat, Sz, Cxz)) continue;
-      const model::Mahalanobis2<T> gate(Sz + mc.R);
+      Mat2<T> S;
+      if (!track_gate(t, k, mc, z_hat, S)) continue;
+      const model::Mahalanobis2<T> gate(S);
       if (!gate.valid()) continue;
       for (std::size_t j = 0; j < s.count; ++j) {
         if (unexplained_[si][j] == 0) continue;
