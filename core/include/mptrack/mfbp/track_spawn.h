@@ -177,12 +177,14 @@ class TrackSpawner {
       const ScanSlot<T, Caps>& s = store.at(si);
       for (std::size_t j = 0; j < s.count; ++j) {
         if (unexplained_[si][j] != kInClutter || !birth_point(store, si, j)) continue;
+        // Cheapest test first: a point no stronger than the weakest kept one
+        // cannot enter the list, whatever its tail and gate.
+        if (nc == room && !(s.amp[j] > cand[nc - 1].score)) continue;
         if (!(amplitude_tail_in_clutter(s.r[j], s.az[j], s.amp[j], k_ref, cl, p, n_order) <
               p.birth_single_point_tail)) {
           continue;
         }
         if (in_a_track_gate(s.r[j], s.az[j], k, tracks, p, mc)) continue;
-        if (nc == room && !(s.amp[j] > cand[nc - 1].score)) continue;
         Candidate c;
         c.score = s.amp[j];
         c.s1 = c.s2 = static_cast<std::uint16_t>(si);
