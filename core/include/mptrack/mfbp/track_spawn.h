@@ -80,7 +80,7 @@ class TrackSpawner {
       start_track(cand[b], store, tracks, p, first_new, next_id, counters);
     }
     if (p.birth_single_point_tail > T(0) && in_clutter < p.birth_max_in_clutter) {
-      nc = single_points(n, store, tracks, cl, p, mc, p.birth_max_in_clutter - in_clutter, cand);
+      nc = single_points(n, store, tracks, p, mc, p.birth_max_in_clutter - in_clutter, cand);
       for (std::size_t b = 0; b < nc; ++b) start_track(cand[b], store, tracks, p, first_new, next_id, counters);
     }
   }
@@ -94,12 +94,14 @@ class TrackSpawner {
   struct Candidate {
     T score = T(0);
     std::uint16_t s1 = 0, j1 = 0, s2 = 0, j2 = 0;
-    bool in_clutter = false;  ///< a point passed only by the amplitude test (kInClutter)
+    bool in_clutter = false;  ///< a point passed only by the amplitude test (inside_clutter)
     bool single = false;      ///< one-point birth (s1 == s2, j1 == j2)
   };
   /// Marks of unexplained_: not a candidate, a candidate, a candidate
-  /// inside Gaussian clutter by its amplitude alone.
-  static constexpr std::uint8_t kExplained = 0, kFree = 1, kInClutter = 2;
+  /// inside Gaussian clutter by its amplitude alone, and such a candidate
+  /// whose amplitude also passes birth_single_point_tail (a one-point birth).
+  static constexpr std::uint8_t kExplained = 0, kFree = 1, kInClutter = 2, kStandsAlone = 3;
+  static bool inside_clutter(std::uint8_t mark) { return mark >= kInClutter; }
   using Candidates = std::array<Candidate, kMaxCandidates>;
 
   /// Unexplained and, with NEMP, not vetoed by the classifier (on window
@@ -115,35 +117,37 @@ class TrackSpawner {
       const ScanSlot<T, Caps>& s = store.at(si);
       for (std::size_t j = 0; j < s.count; ++j) {
         bool u = !s.used_by_birth(j);
-        bool in_clutter = false;
+        std::uint8_t clutter = kExplained;
         if (u && s.has_beliefs) {
           const T comp_share = T(1) - s.target_share[j] - s.uniform_share[j];
           const bool free_of_tracks = s.target_share[j] < p.unexplained_threshold;
           u = free_of_tracks &&
               (p.birth_max_component_share >= T(1) || comp_share < p.birth_max_component_share);
-          if (free_of_tracks && !u) {
-            in_clutter = amplitude_stands_out(s.r[j], s.az[j], s.amp[j], k_ref, cl, p, mc.n_order);
-          }
+          if (free_of_tracks && !u) clutter = clutter_mark(s.r[j], s.az[j], s.amp[j], k_ref, cl, p, mc.n_order);
         }
-        unexplained_[si][j] = in_clutter ? kInClutter : (u ? kFree : kExplained);
+        unexplained_[si][j] = clutter != kExplained ? clutter : (u ? kFree : kExplained);
       }
       if (!s.has_beliefs && si >= store.n_hist()) mark_gated(s, si, si - store.n_hist(), tracks, p, mc);
     }
   }
 
-  /// Birth inside clutter (docs/algorithms/mfbp.md §Birth): true if the
-  /// amplitude m is less likely than birth_amplitude_tail under every
+  /// Birth inside clutter (docs/algorithms/mfbp.md §Birth): kInClutter if
+  /// the amplitude m is less likely than birth_amplitude_tail under every
   /// Gaussian clutter component whose gate (clutter_gate_chi2) holds (r, az),
   /// at its mean CNR on window scan k_ref (estimated map) or its known CNR
-  /// (known map); false if no component gates it or the test is off.
-  static bool amplitude_stands_out(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
+  /// (known map); kStandsAlone if also less likely than
+  /// birth_single_point_tail; kExplained if no component gates it or the
+  /// test is off.
+  static std::uint8_t clutter_mark(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
                                    const MfbpParams<T>& p, int n_order) {
-    if (!(p.birth_amplitude_tail > T(0)) || !p.amplitude.use_amplitude) return false;
-    return amplitude_tail_in_clutter(r, az, m, k_ref, cl, p, n_order) < p.birth_amplitude_tail;
+    if (!(p.birth_amplitude_tail > T(0)) || !p.amplitude.use_amplitude) return kExplained;
+    const T tail = amplitude_tail_in_clutter(r, az, m, k_ref, cl, p, n_order);
+    if (!(tail < p.birth_amplitude_tail)) return kExplained;
+    return tail < p.birth_single_point_tail ? kStandsAlone : kInClutter;
   }
 
   /// The largest amplitude_tail of m under the Gaussian components whose
-  /// gate holds (r, az) (see amplitude_stands_out); 1 if none gates it.
+  /// gate holds (r, az) (see clutter_mark); 1 if none gates it.
   static T amplitude_tail_in_clutter(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
                                      const MfbpParams<T>& p, int n_order) {
     const T d = p.amplitude.threshold;
@@ -162,43 +166,30 @@ class TrackSpawner {
   }
 
   /// One-point births inside clutter (docs/algorithms/mfbp.md §Birth): up to
-  /// `room` unpaired window points that passed the amplitude test inside a
-  /// component (kInClutter) with a tail below birth_single_point_tail, the
-  /// strongest first (ties: earlier scan, lower index). Marked used by a birth.
-  std::size_t single_points(std::size_t n, Store& store, const Tracks& tracks, const ClutterTable<T, Caps>& cl,
-                            const MfbpParams<T>& p, const ModelConstants<T>& mc, std::size_t room,
-                            Candidates& cand) const {
-    const int n_order = mc.n_order;
+  /// `room` unpaired window points marked kStandsAlone (clutter_mark) and
+  /// outside every live track's gate, the strongest first (ties: earlier
+  /// scan, lower index), ranked by offer() (so marked used by a birth).
+  std::size_t single_points(std::size_t n, Store& store, const Tracks& tracks, const MfbpParams<T>& p,
+                            const ModelConstants<T>& mc, std::size_t room, Candidates& cand) const {
     if (room > kMaxCandidates) room = kMaxCandidates;
-    const std::size_t k_ref = store.n_win() > 0 ? store.n_win() - 1 : 0;
     std::size_t nc = 0;
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t si = store.n_hist() + k;
       const ScanSlot<T, Caps>& s = store.at(si);
       for (std::size_t j = 0; j < s.count; ++j) {
-        if (unexplained_[si][j] != kInClutter || !birth_point(store, si, j)) continue;
-        // Cheapest test first: a point no stronger than the weakest kept one
-        // cannot enter the list, whatever its tail and gate.
+        if (unexplained_[si][j] != kStandsAlone || !birth_point(store, si, j)) continue;
+        // Cheaper than the gate: a point no stronger than the weakest kept
+        // one cannot enter the list.
         if (nc == room && !(s.amp[j] > cand[nc - 1].score)) continue;
-        if (!(amplitude_tail_in_clutter(s.r[j], s.az[j], s.amp[j], k_ref, cl, p, n_order) <
-              p.birth_single_point_tail)) {
-          continue;
-        }
         if (in_a_track_gate(s.r[j], s.az[j], k, tracks, p, mc)) continue;
         Candidate c;
         c.score = s.amp[j];
         c.s1 = c.s2 = static_cast<std::uint16_t>(si);
         c.j1 = c.j2 = static_cast<std::uint16_t>(j);
         c.in_clutter = c.single = true;
-        std::size_t pos = nc == room ? nc - 1 : nc++;
-        while (pos > 0 && c.score > cand[pos - 1].score) {
-          cand[pos] = cand[pos - 1];
-          --pos;
-        }
-        cand[pos] = c;
+        offer(c, store, cand, nc, room);
       }
     }
-    for (std::size_t b = 0; b < nc; ++b) store.at(cand[b].s1).set_used_by_birth(cand[b].j1, true);
     return nc;
   }
 
@@ -303,7 +294,7 @@ class TrackSpawner {
       c.j1 = static_cast<std::uint16_t>(j1);
       c.s2 = static_cast<std::uint16_t>(s2);
       c.j2 = static_cast<std::uint16_t>(j2);
-      c.in_clutter = unexplained_[s1][j1] == kInClutter || unexplained_[s2][j2] == kInClutter;
+      c.in_clutter = inside_clutter(unexplained_[s1][j1]) || inside_clutter(unexplained_[s2][j2]);
       offer(c, store, cand, nc, max_births);
       return;
     }
