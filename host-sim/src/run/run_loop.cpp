@@ -72,23 +72,28 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
   rec.latency_us.assign(n, 0.0);
   std::vector<EstimateOut> finals;
   const FrameInput input = tracker.frame_input();
+  // A step()/flush() during which the mixture truncation count grew (RunRecord::steps_truncating).
+  std::uint64_t truncated = tracker.counters().mixture_truncated;
+  const auto count_truncation = [&] {
+    const std::uint64_t now = tracker.counters().mixture_truncated;
+    if (now > truncated) ++rec.steps_truncating;
+    truncated = now;
+  };
   source.deliver([&](const scenario::SimScan& s, const RawFrame* frame) {
     rec.delivered.push_back(s.scan);
-    const std::uint64_t truncated_before = tracker.counters().mixture_truncated;
     const auto t0 = std::chrono::steady_clock::now();
     const Status st = frame != nullptr ? tracker.step_frame(*frame, s, finals) : tracker.step(s, finals);
     const auto t1 = std::chrono::steady_clock::now();
-    if (tracker.counters().mixture_truncated > truncated_before) ++rec.steps_truncating;
+    count_truncation();
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     rec.latency_us[s.scan - 1] = us;
     rec.statuses.push_back(st);
     if (progress != nullptr) progress->tick();
     return us;
   }, input);
-  const std::uint64_t truncated_before = tracker.counters().mixture_truncated;
   rec.statuses.push_back(tracker.flush(finals));
+  count_truncation();
   rec.counters = tracker.counters();
-  if (rec.counters.mixture_truncated > truncated_before) ++rec.steps_truncating;
   rec.by_scan = estimates_by_scan(finals, rec.delivered, n);
   return rec;
 }
