@@ -128,7 +128,7 @@ def balanced_epoch(labels, rng):
     return idx
 
 
-def run_epochs(stage, params, forward, data, norm, epochs, lr, batch, rng, mask_fn=None):
+def run_epochs(stage, params, forward, data, norm, epochs, lr, batch, rng, mask_fn=None, belief_dropout=0.0):
     opt = torch.optim.Adam(params, lr=lr)
     loss_fn = nn.BCELoss()
     for ep in range(epochs):
@@ -138,7 +138,14 @@ def run_epochs(stage, params, forward, data, norm, epochs, lr, batch, rng, mask_
             b = idx[s:s + batch]
             x = to_input(data["patches"][b], *norm)
             y = torch.from_numpy(data["labels"][b].astype(np.float32))
-            w = torch.from_numpy(data["belief"][b].astype(np.float32))
+            w = data["belief"][b].astype(np.float32)
+            # Belief dropout: a share of the patches is seen with the
+            # uninformative belief 0.5, the input MP-NN's removal and NEMP's
+            # birth veto give the network, so that it stays a patch-only
+            # classifier there (docs/algorithms/sea_clutter.md §Training).
+            if belief_dropout > 0.0:
+                w = np.where(rng.random(len(b)) < belief_dropout, np.float32(0.5), w)
+            w = torch.from_numpy(w)
             opt.zero_grad()
             loss = loss_fn(forward(x, w), y)
             loss.backward()
@@ -294,11 +301,13 @@ def main():
     ap.add_argument("--test-out", required=True, help="dataset dir, seed003-sea-b")
     ap.add_argument("--root", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
     ap.add_argument("--seed", type=int, default=3)
-    ap.add_argument("--epochs1", type=int, default=5)
-    ap.add_argument("--epochs2", type=int, default=3)
+    ap.add_argument("--epochs1", type=int, default=8)
+    ap.add_argument("--epochs2", type=int, default=4)
     ap.add_argument("--lr", type=float, default=2e-3)
     ap.add_argument("--batch", type=int, default=64)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--belief-dropout", type=float, default=0.5,
+                    help="stage 2: share of patches trained with the belief 0.5 instead of the recorded one")
     ap.add_argument("--eval-clutter", type=int, default=4000, help="clutter patches scored per test set")
     a = ap.parse_args()
     t0 = time.time()
@@ -337,13 +346,18 @@ def main():
         def mask_fn():
             mlp.mlp1.weight.grad[:, 8].zero_()
     opt_params = [{"params": mlp.parameters()}, {"params": cnn.parameters(), "lr": a.lr / 10}]
-    run_epochs(2, opt_params, lambda x, w: mlp(cnn(x), w), train, norm, a.epochs2, a.lr, a.batch, rng, mask_fn)
+    run_epochs(2, opt_params, lambda x, w: mlp(cnn(x), w), train, norm, a.epochs2, a.lr, a.batch, rng, mask_fn,
+               0.0 if belief_constant else a.belief_dropout)
     cnn.eval()
     mlp.eval()
     folded = FoldedCnn(cnn).eval()
 
     results = {"seed": a.seed, "epochs": [a.epochs1, a.epochs2], "lr": a.lr, "batch": a.batch,
-               "belief_placeholder": belief_constant, "raw_target_fraction": raw_fraction,
+               "belief_placeholder": belief_constant, "belief_source": train["meta"].get("beliefs", "?"),
+               "belief_dropout": 0.0 if belief_constant else a.belief_dropout,
+               "belief_mean": {"target": float(train["belief"][train["labels"] == 1].mean()),
+                               "clutter": float(train["belief"][train["labels"] == 0].mean())},
+               "raw_target_fraction": raw_fraction,
                "train": {"rows": int(len(train["labels"])), "targets": int(train["labels"].sum()),
                          "runs": train["meta"]["runs"], "scenario": train["meta"]["scenario"]}}
     results["in_domain"] = evaluate(folded, mlp, test_in, norm, rng, a.eval_clutter)

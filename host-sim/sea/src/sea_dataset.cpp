@@ -58,11 +58,11 @@ void write_meta(const DatasetConfig& c, const DatasetCounts& n, std::size_t rows
                " - floor_db) * 255 / span_db) clipped\", \"labels.npy\": \"uint8 (N,) 1 = target\","
                " \"scr_db.npy\": \"float32 (N,)\", \"scene.npy\": \"int32 (N,) scr_index * runs + run index\","
                " \"run.npy\": \"int32 (N,)\", \"scan.npy\": \"int32 (N,)\", \"target.npy\": \"int32 (N,) target index or -1\","
-               " \"belief.npy\": \"float32 (N,) tracker association belief P(target-originated) from MP (mfbp) runs, 0.5 if none\","
+               " \"belief.npy\": \"float32 (N,) tracker association belief P(target-originated), source under beliefs, 0.5 if none\","
                " \"plot.npy\": \"float32 (N, 7) range_m, doppler_hz, range_rate_mps, amplitude, range_bin,"
                " doppler_bin, cells\"}\n}\n",
                c.scenario.name.c_str(), static_cast<unsigned long long>(c.seed), c.runs, c.run_offset, c.scr_min_db,
-               c.scr_max_db, c.scr_step_db, c.beliefs ? "mfbp" : "placeholder 0.5", rows, static_cast<unsigned long long>(n.targets),
+               c.scr_max_db, c.scr_step_db, c.beliefs ? c.beliefs_source.c_str() : "placeholder 0.5", rows, static_cast<unsigned long long>(n.targets),
                static_cast<unsigned long long>(n.scenes), static_cast<unsigned long long>(n.scans),
                static_cast<unsigned long long>(n.truth_detected), static_cast<unsigned long long>(n.truth_total),
                static_cast<unsigned long long>(n.partial_scans), static_cast<unsigned long long>(n.clusters),
@@ -126,6 +126,7 @@ DatasetCounts build_dataset(const DatasetConfig& config) {
       while (gen.next(scan)) {
         scene.time_s.push_back(scan.time_s + 0.5 * static_cast<double>(sc.pulses) / sc.prf_hz);
         scene.plots.emplace_back();
+        scene.patches.emplace_back();
         ++n.scans;
         const Status st = det->process(scan.re.data(), scan.im.data());
         if (st == Status::kPartial) ++n.partial_scans;
@@ -139,6 +140,7 @@ DatasetCounts build_dataset(const DatasetConfig& config) {
           if (t >= 0) seen[static_cast<std::size_t>(t)] = true;
           const auto& patch = det->patch(j);
           col.patches.insert(col.patches.end(), patch.begin(), patch.end());
+          scene.patches.back().insert(scene.patches.back().end(), patch.begin(), patch.end());
           col.labels.push_back(t >= 0 ? 1 : 0);
           col.target.push_back(t);
           col.scr_db.push_back(static_cast<float>(sc.scr_db));

@@ -20,7 +20,7 @@ struct DatasetArgs {
   double pfa = 0.28;
   double scr = -1000.0;  ///< --scr: one SCR for every target (overrides the sweep)
   std::string out;
-  std::string beliefs = "mfbp";  ///< --beliefs: mfbp (MF-BP runs) or none (0.5)
+  std::string beliefs = "nemp";  ///< --beliefs: nemp or mfbp (that tracker's runs) or none (0.5)
 };
 
 int run_dataset(const DatasetArgs& a) {
@@ -38,14 +38,18 @@ int run_dataset(const DatasetArgs& a) {
   c.seed = a.seed;
   c.detector = sea::detector_params_for(c.scenario);
   c.detector.cfar.pfa = a.pfa;
-  if (a.beliefs == "mfbp") {
+  if (a.beliefs == "mfbp" || a.beliefs == "nemp") {
     if (sea_beliefs_available()) {
-      c.beliefs = &mfbp_scene_beliefs;
+      const BeliefSource source = a.beliefs == "nemp" ? BeliefSource::kNemp : BeliefSource::kMfbp;
+      c.beliefs = [source](const sea::SeaScenario& s, const sea::ScenePlots& scene) {
+        return scene_beliefs(source, s, scene);
+      };
+      c.beliefs_source = a.beliefs;
     } else {
       std::fprintf(stderr, "note: no trained classifier header yet: belief.npy keeps the 0.5 placeholder\n");
     }
   } else if (a.beliefs != "none") {
-    std::fprintf(stderr, "error: --beliefs must be mfbp or none\n");
+    std::fprintf(stderr, "error: --beliefs must be nemp, mfbp or none\n");
     return 2;
   }
   c.out_dir = a.out.empty() ? "out/dataset-" + a.scenario : a.out;
@@ -79,7 +83,8 @@ Subcommand add_dataset_command(CLI::App& app) {
   cmd->add_option("--pfa", args->pfa, "CFAR false-alarm probability per cell");
   cmd->add_option("--out", args->out, "output directory (default out/dataset-<scenario>)");
   cmd->add_option("--beliefs", args->beliefs,
-                  "belief.npy: mfbp = MF-BP's association belief per plot (the MLP's tracker input), none = 0.5")
+                  "belief.npy, the MLP's tracker input: nemp = NEMP's extrinsic association belief per plot (sea"
+                  " settings, committed network), mfbp = plain MF-BP's, none = 0.5")
       ->capture_default_str();
   return Subcommand{cmd, [args](const RunOptions&) { return run_dataset(*args); }};
 }

@@ -31,24 +31,6 @@ using Nemp = mfbp::NempState<double, DefaultCaps>;
 using Evidence = mfbp::ScanEvidence<DefaultCaps::kMaxMeasurements>;
 constexpr std::size_t kF = classify::kNumFeatures;
 
-/// The sea defaults of NEMP (docs/algorithms/nemp.md §Sea settings; tuned
-/// on seed003-sea-a only, 10 runs at -10/0/20 dB, window 4 / slide 1).
-mfbp::NempParams<double> sea_nemp_params() {
-  mfbp::NempParams<double> np;
-  // Births only from detections MP-NN would keep: without it every window
-  // filled its 20 births with strong clutter pairs (sea-a 0 dB: MOSPA 8.25
-  // -> 7.04, false tracks per scan 1.41 -> 0.76).
-  np.birth_min_target_prob = 0.5;
-  // The classifier's odds squared (temperature 1/2) and bounded at 0.5:
-  // only the clutter side acts (clutter plots crowd the clutter band, where
-  // the uniform clutter model is too thin); letting target-like clutter
-  // plots lower their clutter weight fed false tracks (bound 0.6: 0.80
-  // false tracks per scan at 20 dB, 0.5: 0.43; gain 1: 1.0 at 0 dB).
-  np.nn_log_odds_gain = 2.0;
-  np.nn_max_target_prob = 0.5;
-  return np;
-}
-
 /// `--mfbp-param nemp.NAME=VALUE` (rounds, nn_reliability,
 /// birth_min_target_prob); other names are MfbpParams' and skipped here.
 std::string apply_nemp_params(mfbp::NempParams<double>& np, const std::vector<std::string>& overrides) {

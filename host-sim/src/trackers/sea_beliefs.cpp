@@ -1,9 +1,10 @@
-// MF-BP association beliefs of a sea scene; see sea_beliefs.h.
+// MF-BP / NEMP association beliefs of a sea scene; see sea_beliefs.h.
 #include "trackers/sea_beliefs.h"
 
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "mptrack/classify/sea_classifier.h"
 #include "mptrack/classify/trained_weights.h"
@@ -29,11 +30,30 @@ void drain(Nemp& nemp, const sea::ScenePlots& scene, sea::SceneBeliefs& out) {
   nemp.clear_finalised();
 }
 
+/// The classifier features of every plot of scan k into `evidence`
+/// (kNemp), or "has a patch" only (kMfbp: reliability 0 never reads them).
+void fill_evidence(BeliefSource source, classify::SeaClassifier& classifier, const sea::ScenePlots& scene,
+                   std::size_t k, Evidence& evidence) {
+  evidence.has_patch.fill(true);
+  if (source != BeliefSource::kNemp) return;
+  constexpr std::size_t kCodes = classify::kPatchSize;
+  if (k >= scene.patches.size() || scene.patches[k].size() != scene.plots[k].size() * kCodes) {
+    throw std::runtime_error("NEMP belief recorder: the scene carries no patches");
+  }
+  std::vector<float> patch(kCodes);
+  for (std::size_t j = 0; j < scene.plots[k].size() && j < DefaultCaps::kMaxMeasurements; ++j) {
+    for (std::size_t i = 0; i < kCodes; ++i) patch[i] = static_cast<float>(scene.patches[k][j * kCodes + i]);
+    if (classifier.features(patch.data(), evidence.features[j]) != Status::kOk) {
+      throw std::runtime_error("NEMP belief recorder: classifier features failed");
+    }
+  }
+}
+
 }  // namespace
 
 bool sea_beliefs_available() { return classify::kHaveTrainedWeights; }
 
-sea::SceneBeliefs mfbp_scene_beliefs(const sea::SeaScenario& scenario, const sea::ScenePlots& scene) {
+sea::SceneBeliefs scene_beliefs(BeliefSource source, const sea::SeaScenario& scenario, const sea::ScenePlots& scene) {
   TrackerSetup setup;
   setup.spec = sea_spec_view(scenario);
   setup.sea_scenario = std::make_shared<const sea::SeaScenario>(scenario);
@@ -44,14 +64,16 @@ sea::SceneBeliefs mfbp_scene_beliefs(const sea::SeaScenario& scenario, const sea
   auto nemp = std::make_unique<Nemp>();
   auto evidence = std::make_unique<Evidence>();
   auto scan = std::make_unique<Tracker::ScanType>();
-  mfbp::NempParams<double> np;
-  np.rounds = 1;
-  np.nn_reliability = 0.0;  // BetP = p_FG: the rounds leave MF-BP's association as it is
+  mfbp::NempParams<double> np = sea_nemp_params();
+  if (source == BeliefSource::kMfbp) {
+    np = mfbp::NempParams<double>{};
+    np.rounds = 1;
+    np.nn_reliability = 0.0;  // BetP = p_FG: the rounds leave MF-BP's association as it is
+  }
   if (tracker->init(p) != Status::kOk || classifier->init(classify::trained_weights()) != Status::kOk ||
       nemp->init(classifier.get(), np) != Status::kOk || tracker->attach_nemp(nemp.get()) != Status::kOk) {
-    throw std::runtime_error("MF-BP belief recorder: init failed (trained classifier weights needed)");
+    throw std::runtime_error("belief recorder: init failed (trained classifier weights needed)");
   }
-  evidence->has_patch.fill(true);  // every plot has a patch; the features are never used
   sea::SceneBeliefs out;
   for (std::size_t k = 0; k < scene.plots.size(); ++k) {
     scan->time_us = static_cast<std::uint64_t>(std::llround(scene.time_s[k] * 1e6));
@@ -65,6 +87,7 @@ sea::SceneBeliefs mfbp_scene_beliefs(const sea::SeaScenario& scenario, const sea
       m.doppler_mps = x.range_rate_mps;
       (void)scan->measurements.push_back(m);  // at most 64 plots: below the cap
     }
+    fill_evidence(source, *classifier, scene, k, *evidence);
     (void)tracker->step(*scan, *evidence);
     drain(*nemp, scene, out);
   }

@@ -31,6 +31,9 @@ int label_plot(double range_m, double doppler_bin, const std::vector<SeaTruth>& 
 struct ScenePlots {
   std::vector<double> time_s;                            ///< CPI centre of each scan [s]
   std::vector<std::vector<seaclutter::SeaPlot>> plots;   ///< [scan][plot]
+  /// [scan] the plots' 5 x 512 patch codes, plot after plot (the classifier's
+  /// input, for a belief source that runs NEMP)
+  std::vector<std::vector<std::uint8_t>> patches;
 };
 /// Per scan and plot, the tracker's P(target-originated) of the plot.
 using SceneBeliefs = std::vector<std::vector<float>>;
@@ -48,6 +51,7 @@ struct DatasetConfig {
   /// Fills belief.npy (seed 003 Sec. III-D: the MLP's tracker input, from
   /// MP runs on the training sequences); empty = the 0.5 placeholder.
   BeliefFn beliefs;
+  std::string beliefs_source = "placeholder 0.5";  ///< what filled belief.npy, for meta.json
 };
 
 struct DatasetCounts {
