@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 
 #include "mptrack/mfbp/evidence.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
@@ -46,31 +47,31 @@ TEST_CASE("mfbp weaker clutter: a component of lower power than the target holds
   const MfbpParams<double> p = known_map_params();
   const mfbp::ClutterTable<double, WcCaps> cl{};
   // Centre, target total power 11 (SNR 10) > 5: weaker.
-  CHECK(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  CHECK(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 0u, cl, p));
   // Equal or lower target power: not weaker (the amplitude does not favour the target).
-  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 5.0, 0, cl, p));
-  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 4.0, 0, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 5.0, 0, 0u, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 4.0, 0, 0u, cl, p));
   // 5 sigma in range: d^2 = 25 <= clutter_gate_chi2 30, inside; 5.6 sigma: d^2 = 31.36, outside.
-  CHECK(mfbp::inside_weaker_component(30000.0 + 5.0 * 2500.0, kAz0, 11.0, 0, cl, p));
-  CHECK_FALSE(mfbp::inside_weaker_component(30000.0 + 5.6 * 2500.0, kAz0, 11.0, 0, cl, p));
+  CHECK(mfbp::inside_weaker_component(30000.0 + 5.0 * 2500.0, kAz0, 11.0, 0, 0u, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0 + 5.6 * 2500.0, kAz0, 11.0, 0, 0u, cl, p));
   // 3 sigma in both: d^2 = 18, inside.
-  CHECK(mfbp::inside_weaker_component(30000.0 + 3.0 * 2500.0, kAz0 - 3.0 * kSigAz, 11.0, 0, cl, p));
+  CHECK(mfbp::inside_weaker_component(30000.0 + 3.0 * 2500.0, kAz0 - 3.0 * kSigAz, 11.0, 0, 0u, cl, p));
 }
 
 TEST_CASE("mfbp weaker clutter: never without amplitude or Gaussian components") {
   MfbpParams<double> p = known_map_params();
   const mfbp::ClutterTable<double, WcCaps> cl{};
   p.amplitude.use_amplitude = false;  // KI ablation
-  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 0u, cl, p));
   p = known_map_params();
   p.clutter_mode = ClutterMode::kKnownRateUniform;  // NCE ablation: uniform clutter only
-  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 0u, cl, p));
   p = known_map_params();
   p.known_clutter.components[0].rate_per_scan = 0.0;  // a component that produces nothing
-  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 0u, cl, p));
   p = known_map_params();
   p.clutter_mode = ClutterMode::kEstimatedMap;  // no component alive yet
-  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, cl, p));
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 0u, cl, p));
 }
 
 TEST_CASE("mfbp young track in weaker clutter: predictive evidence N(y; z, Sz + R), not E[ln N]") {
@@ -129,4 +130,29 @@ TEST_CASE("mfbp young track in weaker clutter: confirmed at confirm_threshold_in
   tracks[2].predictive_evidence = true;
   tracks[2].vis[0] = 0.8;
   CHECK(mfbp::confirmation_threshold(tracks[2], p) == 0.75);
+}
+
+TEST_CASE("mfbp known map: a component counts only on scans inside its active interval") {
+  MfbpParams<double> p = known_map_params();
+  const mfbp::ClutterTable<double, WcCaps> cl{};
+  auto& c = p.known_clutter.components[0];
+  c.active_from_us = 10'000'000;   // exists from the scan at 10 s ...
+  c.active_until_us = 20'000'000;  // ... to the scan at 20 s, both inclusive
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 9'999'999u, cl, p));
+  CHECK(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 10'000'000u, cl, p));
+  CHECK(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 20'000'000u, cl, p));
+  // A window scan after the component ended (the KCE ablation's older scans
+  // are evaluated against the newest map): no longer clutter there.
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 20'000'001u, cl, p));
+}
+
+TEST_CASE("mfbp known map: an interval that ends before it starts is refused, naming the field") {
+  MfbpParams<double> p = known_map_params();
+  p.known_clutter.components[0].active_from_us = 5;
+  p.known_clutter.components[0].active_until_us = 4;
+  ParamError e;
+  CHECK(p.validate(&e) == Status::kInvalidArgument);
+  CHECK(std::string(e.field) == "known_clutter.components.active_until_us");
+  p.known_clutter.components[0].active_until_us = 5;  // one scan: valid
+  CHECK(p.validate(&e) == Status::kOk);
 }

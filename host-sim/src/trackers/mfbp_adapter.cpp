@@ -3,6 +3,7 @@
 // The scenario supplies region, noise, threshold, Swerling case and scan
 // period; mfbp-kce also gets the exact clutter map of every scan (Table III
 // with lifetimes and seed 000 eq. (104) time variation), mfbp-nce the uniform rate.
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -81,24 +82,32 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
   }
 
  private:
-  // Table III map in effect at scan k (components outside their lifetime left out).
+  // Table III map for scan k: every non-uniform component with the scan
+  // times it exists in (KnownClutterComponent::active_*_us: the tracker
+  // evaluates each stored scan against the map, and the window reaches back
+  // before k) and its parameters at scan k, or at the nearest scan of its
+  // life. The uniform part is the one in effect at k.
   KnownClutter<double> known_clutter(std::uint32_t k) const {
     KnownClutter<double> kc;
     kc.uniform_rate_per_scan = 0.0;
     kc.uniform_cnr = uniform_cnr(spec_);
     for (const auto& c : spec_.clutter) {
-      if (!scenario::alive(c.birth_scan, c.death_scan, k)) continue;
-      const scenario::ClutterAtScan a = scenario::clutter_at_scan(spec_, c, k);
       if (c.uniform) {
-        kc.uniform_rate_per_scan += a.mean_count * scale_;
+        if (scenario::alive(c.birth_scan, c.death_scan, k)) {
+          kc.uniform_rate_per_scan += scenario::clutter_at_scan(spec_, c, k).mean_count * scale_;
+        }
         continue;
       }
       if (kc.num_components >= kMaxKnownClutterComponents) continue;
+      const std::uint32_t at = std::min(std::max(k, c.birth_scan), c.death_scan);
+      const scenario::ClutterAtScan a = scenario::clutter_at_scan(spec_, c, at);
       KnownClutterComponent<double>& o = kc.components[kc.num_components++];
       o.rate_per_scan = a.mean_count * scale_;
       o.mean << a.mean_range_m, a.mean_azimuth_rad;
       o.covariance << a.cov_rr, a.cov_ra, a.cov_ra, a.cov_aa;
       o.cnr = a.cnr;
+      o.active_from_us = scenario::scan_time_us(spec_, c.birth_scan);
+      o.active_until_us = scenario::scan_time_us(spec_, c.death_scan);
     }
     return kc;
   }

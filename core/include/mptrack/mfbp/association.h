@@ -141,7 +141,7 @@ class Associator {
       if (!t.participates(k)) continue;
       mo.ok = track_moments(t, k, s, p, mc, counters, mo);
       mo.predictive = mo.ok && p.tentative_predictive_in_clutter && !t.confirmed &&
-                      inside_weaker_component(mo.z(0), mo.z(1), t.igs[k].mean(), k, cl, p);
+                      inside_weaker_component(mo.z(0), mo.z(1), t.igs[k].mean(), k, s.time_us, cl, p);
     }
     if (p.tentative_predictive_in_clutter) mark_predictive(tracks, mc, p);
     if (p.unresolved_chi2 > T(0)) {

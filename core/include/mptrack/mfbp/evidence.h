@@ -73,7 +73,8 @@ T expected_clutter_count(const TrackTable<T, Caps>& tracks, std::size_t k, std::
   return lambda;
 }
 
-/// Clutter evidence with the known clutter map.
+/// Clutter evidence with the known clutter map: the components that exist
+/// at the scan's time (KnownClutterComponent::produces_at).
 template <class T, class Caps, class Bp, std::size_t S>
 void known_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, const ClutterSources<S>& src,
                             const MfbpParams<T>& p, const ModelConstants<T>& mc, T log_dop_clutter) {
@@ -89,7 +90,7 @@ void known_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, const ClutterSou
   for (std::size_t q = 1; q < src.count; ++q) {
     const auto& comp = kc.components[src.slot[q] - 1];
     bp.set_clutter_absent(q, T(0));  // known components are always present
-    if (!(comp.rate_per_scan > T(0))) continue;
+    if (!comp.produces_at(s.time_us)) continue;
     const model::Mahalanobis2<T> dist(comp.covariance);
     if (!dist.valid()) continue;  // validate() refuses such maps already
     const T base = dmath::dlog(comp.rate_per_scan) - dmath::kLnTwoPi<T> - T(0.5) * dmath::dlog(dist.det()) +

@@ -62,6 +62,18 @@ struct KnownClutterComponent {
   Eigen::Matrix<T, 2, 1> mean = Eigen::Matrix<T, 2, 1>::Zero();  ///< [range m, azimuth rad]
   Eigen::Matrix<T, 2, 2> covariance = Eigen::Matrix<T, 2, 2>::Identity();  ///< [m^2, m rad; ., rad^2]
   T cnr = T(1);                                                  ///< mean CNR, linear [-]
+  /// Scan times it exists in, inclusive [us]. The tracker evaluates every
+  /// stored scan against the map, so a component that ends while its last
+  /// scans are still in the window has to keep explaining them (and one that
+  /// starts must not explain the scans before it): the KCE ablation was given
+  /// the map of the newest scan only and read chaff on the older window scans
+  /// as targets (docs/algorithms/mfbp.md §Clutter chain, ablations).
+  std::uint64_t active_from_us = 0;
+  std::uint64_t active_until_us = UINT64_MAX;
+
+  bool exists_at(std::uint64_t t_us) const { return active_from_us <= t_us && t_us <= active_until_us; }
+  /// Produces clutter on a scan at time t_us.
+  bool produces_at(std::uint64_t t_us) const { return rate_per_scan > T(0) && exists_at(t_us); }
 };
 
 /// Known components a Params struct can describe (independent of Caps so
@@ -451,6 +463,8 @@ Status MfbpParams<T>::validate_known_clutter(T max_count, T max_power, ParamErro
     MPTRACK_CHECK_PARAM(w, "known_clutter.components.rate_per_scan",
                         check_range(comp.rate_per_scan, T(0), max_count));
     MPTRACK_CHECK_PARAM(w, "known_clutter.components.cnr", check_range(comp.cnr, T(0), max_power));
+    MPTRACK_CHECK_PARAM(w, "known_clutter.components.active_until_us",
+                        check(comp.active_from_us <= comp.active_until_us));
     const T det = comp.covariance(0, 0) * comp.covariance(1, 1) -
                   comp.covariance(0, 1) * comp.covariance(1, 0);
     MPTRACK_CHECK_PARAM(w, "known_clutter.components.covariance",

@@ -276,7 +276,8 @@ class MfbpTracker {
     mfbp::confirm_tracks(tracks_, n, params_, counters_);
     mfbp::suppress_duplicates(tracks_, n, params_, counters_);
     for (std::size_t k = 0; k < finalize_count; ++k) emit_estimate(k);
-    mfbp::manage_tracks(tracks_, clutter_, n, finalize_count, params_, counters_);
+    mfbp::manage_tracks(tracks_, clutter_, n, finalize_count, n > 0 ? store_.win(n - 1).time_us : 0u, params_,
+                        counters_);
     if (estimate_clutter()) mfbp::manage_components(clutter_, finalize_count, params_, counters_);
     shift_window(finalize_count);
   }

@@ -41,7 +41,8 @@ void report_tracks(Estimate& est, std::size_t k, const ScanSlot<T, Caps>& s, Tra
   }
 }
 
-/// The known clutter map (the uniform report u is filled in but for its counts).
+/// The known clutter map at the estimate's time (the uniform report u is
+/// filled in but for its counts).
 template <class T, class Estimate>
 void report_known_clutter(Estimate& est, ClutterReport<T> u, const MfbpParams<T>& p, std::size_t max_comp) {
   u.expected_count = p.known_clutter.uniform_rate_per_scan;
@@ -50,6 +51,7 @@ void report_known_clutter(Estimate& est, ClutterReport<T> u, const MfbpParams<T>
   const std::size_t nk = known_components(p, max_comp);
   for (std::size_t c = 0; c < nk; ++c) {
     const auto& comp = p.known_clutter.components[c];
+    if (!comp.exists_at(est.time_us)) continue;
     ClutterReport<T> r;
     r.id = static_cast<std::uint32_t>(c + 1);
     r.mean = comp.mean;

@@ -64,8 +64,8 @@ void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams
 /// component explains the target's detections as well as the track does, so
 /// a run of missed associations is weak evidence that the target is gone.
 template <class T, class Caps>
-std::size_t deletion_run(const TrackSlot<T, Caps>& t, std::size_t k, const ClutterTable<T, Caps>& cl,
-                         const MfbpParams<T>& p) {
+std::size_t deletion_run(const TrackSlot<T, Caps>& t, std::size_t k, std::uint64_t time_us,
+                         const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p) {
   if (!t.confirmed || !(p.delete_run_in_clutter > p.delete_run)) return p.delete_run;
   const Vec2<T> z = model::polar_of_state(t.xs[k]);
   const T snr = p.amplitude.use_amplitude ? t.igs[k].mean() - T(1) : T(0);
@@ -79,7 +79,7 @@ std::size_t deletion_run(const TrackSlot<T, Caps>& t, std::size_t k, const Clutt
     const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
     for (std::size_t c = 0; c < nk; ++c) {
       const auto& kc = p.known_clutter.components[c];
-      if (kc.rate_per_scan > T(0)) consider(kc.mean, kc.covariance, kc.cnr);
+      if (kc.produces_at(time_us)) consider(kc.mean, kc.covariance, kc.cnr);
     }
   } else if (estimate_clutter(p)) {
     for (const auto& cs : cl.comps) {
@@ -89,13 +89,14 @@ std::size_t deletion_run(const TrackSlot<T, Caps>& t, std::size_t k, const Clutt
   return inside ? p.delete_run_in_clutter : p.delete_run;
 }
 
-/// Deletion after a window of n scans whose first fc are finalised.
+/// Deletion after a window of n scans whose first fc are finalised; the
+/// newest of them at newest_us.
 template <class T, class Caps>
 void manage_tracks(TrackTable<T, Caps>& tracks, const ClutterTable<T, Caps>& cl, std::size_t n, std::size_t fc,
-                   const MfbpParams<T>& p, TrackerCounters& counters) {
+                   std::uint64_t newest_us, const MfbpParams<T>& p, TrackerCounters& counters) {
   for (auto& t : tracks) {
     if (!t.alive) continue;
-    const std::size_t run_needed = n > 0 ? deletion_run(t, n - 1, cl, p) : p.delete_run;
+    const std::size_t run_needed = n > 0 ? deletion_run(t, n - 1, newest_us, cl, p) : p.delete_run;
     for (std::size_t k = t.first; k < fc; ++k) {
       t.low_run = t.vis[k] < p.delete_threshold ? t.low_run + 1u : 0u;
       ++t.age;

@@ -123,7 +123,7 @@ class TrackSpawner {
           const bool free_of_tracks = s.target_share[j] < p.unexplained_threshold;
           u = free_of_tracks &&
               (p.birth_max_component_share >= T(1) || comp_share < p.birth_max_component_share);
-          if (free_of_tracks && !u) clutter = clutter_mark(s.r[j], s.az[j], s.amp[j], k_ref, cl, p, mc.n_order);
+          if (free_of_tracks && !u) clutter = clutter_mark(s.r[j], s.az[j], s.amp[j], k_ref, s.time_us, cl, p, mc.n_order);
         }
         unexplained_[si][j] = clutter != kExplained ? clutter : (u ? kFree : kExplained);
       }
@@ -138,18 +138,18 @@ class TrackSpawner {
   /// (known map); kStandsAlone if also less likely than
   /// birth_single_point_tail; kExplained if no component gates it or the
   /// test is off.
-  static std::uint8_t clutter_mark(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
-                                   const MfbpParams<T>& p, int n_order) {
+  static std::uint8_t clutter_mark(T r, T az, T m, std::size_t k_ref, std::uint64_t time_us,
+                                   const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p, int n_order) {
     if (!(p.birth_amplitude_tail > T(0)) || !p.amplitude.use_amplitude) return kExplained;
-    const T tail = amplitude_tail_in_clutter(r, az, m, k_ref, cl, p, n_order);
+    const T tail = amplitude_tail_in_clutter(r, az, m, k_ref, time_us, cl, p, n_order);
     if (!(tail < p.birth_amplitude_tail)) return kExplained;
     return tail < p.birth_single_point_tail ? kStandsAlone : kInClutter;
   }
 
   /// The largest amplitude_tail of m under the Gaussian components whose
   /// gate holds (r, az) (see clutter_mark); 1 if none gates it.
-  static T amplitude_tail_in_clutter(T r, T az, T m, std::size_t k_ref, const ClutterTable<T, Caps>& cl,
-                                     const MfbpParams<T>& p, int n_order) {
+  static T amplitude_tail_in_clutter(T r, T az, T m, std::size_t k_ref, std::uint64_t time_us,
+                                     const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p, int n_order) {
     const T d = p.amplitude.threshold;
     bool gated = false;
     T tail_max = T(0);
@@ -161,7 +161,7 @@ class TrackSpawner {
       const T tail = amplitude_tail(m, d, varsigma, n_order);
       tail_max = tail > tail_max ? tail : tail_max;
     };
-    for_each_gaussian_component(k_ref, cl, p, consider);
+    for_each_gaussian_component(k_ref, time_us, cl, p, consider);
     return gated ? tail_max : T(1);
   }
 

@@ -8,11 +8,12 @@
 // lower: there the amplitude favours the target (seed 000 eq. (13): the
 // same truncated density with the larger power). The estimated map uses
 // the component beliefs on window scan k, the known map (KCE ablation) the
-// given components. False without amplitude (KI ablation) or Gaussian
+// components that exist at that scan's time. False without amplitude (KI ablation) or Gaussian
 // components (NCE ablation, or none alive).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "mptrack/mfbp/clutter_slot.h"
 #include "mptrack/mfbp/mfbp_params.h"
@@ -24,16 +25,17 @@ namespace mptrack::mfbp {
 
 /// fn(mean, covariance, mean total power E[1 + CNR]) for every Gaussian
 /// clutter component: the known map's components that produce clutter
-/// (kKnownMap), or the live estimated ones on window scan k (their NW mean,
-/// E[D^-1] and CNR belief); none in the NCE ablation.
+/// at time_us, the time of window scan k (kKnownMap), or the live estimated
+/// ones on window scan k (their NW mean, E[D^-1] and CNR belief); none in
+/// the NCE ablation.
 template <class T, class Caps, class Fn>
-void for_each_gaussian_component(std::size_t k, const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p,
-                                 Fn&& fn) {
+void for_each_gaussian_component(std::size_t k, std::uint64_t time_us, const ClutterTable<T, Caps>& cl,
+                                 const MfbpParams<T>& p, Fn&& fn) {
   if (p.clutter_mode == ClutterMode::kKnownMap) {
     const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
     for (std::size_t c = 0; c < nk; ++c) {
       const auto& kc = p.known_clutter.components[c];
-      if (kc.rate_per_scan > T(0)) fn(kc.mean, kc.covariance, T(1) + kc.cnr);
+      if (kc.produces_at(time_us)) fn(kc.mean, kc.covariance, T(1) + kc.cnr);
     }
   } else if (estimate_clutter(p)) {
     for (const auto& cs : cl.comps) {
@@ -43,8 +45,8 @@ void for_each_gaussian_component(std::size_t k, const ClutterTable<T, Caps>& cl,
 }
 
 template <class T, class Caps>
-bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, const ClutterTable<T, Caps>& cl,
-                             const MfbpParams<T>& p) {
+bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, std::uint64_t time_us,
+                             const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p) {
   if (!p.amplitude.use_amplitude) return false;
   bool inside = false;
   const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T varsigma_c) {
@@ -53,7 +55,7 @@ bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, const Clutt
     if (!gate.valid()) return;
     inside = !(gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > p.clutter_gate_chi2);
   };
-  for_each_gaussian_component(k, cl, p, consider);
+  for_each_gaussian_component(k, time_us, cl, p, consider);
   return inside;
 }
 
