@@ -132,6 +132,38 @@ TEST_CASE("mfbp young track in weaker clutter: confirmed at confirm_threshold_in
   CHECK(mfbp::confirmation_threshold(tracks[2], p) == 0.75);
 }
 
+TEST_CASE("mfbp young track in weaker clutter: dropped after tentative_timeout_in_clutter_scans, not 6") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  REQUIRE(p.tentative_timeout_scans == 6u);
+  REQUIRE(p.tentative_timeout_in_clutter_scans == 10u);
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  const mfbp::ClutterTable<double, WcCaps> cl{};
+  TrackerCounters counters{};
+  tracks[0].start(1, 0, 0.5);
+  tracks[1].start(2, 0, 0.5);
+  tracks[1].predictive_evidence = true;
+  CHECK(mfbp::tentative_timeout(tracks[0], p) == 6u);
+  CHECK(mfbp::tentative_timeout(tracks[1], p) == 10u);
+  // Seven finalised scans at b_s = 0.7: no deletion run (above 0.5), both
+  // unconfirmed; the plain track has outlived its 6 scans, the young track
+  // in clutter has not outlived its 10.
+  for (auto* t : {&tracks[0], &tracks[1]}) {
+    for (std::size_t k = 0; k < 4; ++k) t->vis[k] = 0.7;
+  }
+  mfbp::manage_tracks(tracks, cl, 4, 4, 0u, p, counters);  // 4 scans finalised
+  CHECK(tracks[0].alive);
+  CHECK(tracks[1].alive);
+  mfbp::manage_tracks(tracks, cl, 3, 3, 0u, p, counters);  // 7 in all
+  CHECK_FALSE(tracks[0].alive);
+  CHECK(tracks[1].alive);
+  // With the rule off (or an in-clutter timeout not above 6): the plain 6.
+  p.tentative_predictive_in_clutter = false;
+  CHECK(mfbp::tentative_timeout(tracks[1], p) == 6u);
+  p.tentative_predictive_in_clutter = true;
+  p.tentative_timeout_in_clutter_scans = 5;
+  CHECK(mfbp::tentative_timeout(tracks[1], p) == 6u);
+}
+
 TEST_CASE("mfbp known map: a component counts only on scans inside its active interval") {
   MfbpParams<double> p = known_map_params();
   const mfbp::ClutterTable<double, WcCaps> cl{};

@@ -58,6 +58,7 @@ const Count kCounts[] = {
     {"bp_max_iterations", [](P& p) -> std::size_t& { return p.bp_max_iterations; }},
     {"birth_max_per_window", [](P& p) -> std::size_t& { return p.birth_max_per_window; }},
     {"tentative_timeout_scans", [](P& p) -> std::size_t& { return p.tentative_timeout_scans; }},
+    {"tentative_timeout_in_clutter_scans", [](P& p) -> std::size_t& { return p.tentative_timeout_in_clutter_scans; }},
     {"birth_max_in_clutter", [](P& p) -> std::size_t& { return p.birth_max_in_clutter; }},
     {"delete_run_in_clutter", [](P& p) -> std::size_t& { return p.delete_run_in_clutter; }},
 };

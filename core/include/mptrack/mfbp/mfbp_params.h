@@ -266,6 +266,11 @@ struct MfbpParams {
   std::size_t tentative_timeout_scans = 6;  ///< tentative tracks older than this are dropped
                                             ///< (two windows: docs/algorithms/mfbp.md
                                             ///< §Confirmation and reporting)
+  std::size_t tentative_timeout_in_clutter_scans = 10;  ///< Ours. The same for a young track
+                                            ///< that must reach confirm_threshold_in_clutter
+                                            ///< (predictive_evidence); at or below
+                                            ///< tentative_timeout_scans: off (docs/algorithms/
+                                            ///< mfbp.md §Birth)
   T duplicate_chi2 = T(0);            ///< Ours. Two live tracks, at least one confirmed, whose
                                       ///< smoothed 4-D states on the last window scan differ by
                                       ///< less than this Mahalanobis^2 under P_a + P_b are one
@@ -414,6 +419,7 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "delete_threshold", check_open_probability(delete_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_run", check_at_least(delete_run, 1));
   MPTRACK_CHECK_PARAM(w, "tentative_timeout_scans", check_at_least(tentative_timeout_scans, 1));
+  MPTRACK_CHECK_PARAM(w, "tentative_timeout_in_clutter_scans", check_at_least(tentative_timeout_in_clutter_scans, 1));
   MPTRACK_CHECK_PARAM(w, "report_existence_min", check_range(report_existence_min, T(0), T(1)));
   MPTRACK_CHECK_PARAM(w, "duplicate_chi2", check_range(duplicate_chi2, T(0), T(1e6)));
   MPTRACK_TRY(validate_clutter_grid(span_r, span_a, kMaxCellsPerAxis, kMaxSeedCells,

@@ -41,6 +41,19 @@ T confirmation_threshold(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
              : p.confirm_threshold;
 }
 
+/// Finalised scans a tentative track may stay unconfirmed: longer for one
+/// that has to reach confirm_threshold_in_clutter (same condition as
+/// confirmation_threshold): it takes its target's detections at fair odds
+/// against the component only once it has tightened, and at the plain
+/// timeout it died before reaching 0.99 (docs/algorithms/mfbp.md §Birth).
+template <class T, class Caps>
+std::size_t tentative_timeout(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
+  return confirmation_threshold(t, p) > p.confirm_threshold &&
+                 p.tentative_timeout_in_clutter_scans > p.tentative_timeout_scans
+             ? p.tentative_timeout_in_clutter_scans
+             : p.tentative_timeout_scans;
+}
+
 template <class T, class Caps>
 void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams<T>& p,
                     TrackerCounters& counters) {
@@ -107,7 +120,7 @@ void manage_tracks(TrackTable<T, Caps>& tracks, const ClutterTable<T, Caps>& cl,
       run = t.vis[k] < p.delete_threshold ? run + 1u : 0u;
       remove = run >= run_needed;
     }
-    if (!t.confirmed && t.age >= p.tentative_timeout_scans) remove = true;
+    if (!t.confirmed && t.age >= tentative_timeout(t, p)) remove = true;
     if (remove) {
       t.alive = false;
       ++counters.tracks_deleted;
