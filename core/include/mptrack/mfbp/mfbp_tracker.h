@@ -37,8 +37,8 @@
 // [-span, span] for clutter).
 //
 // Memory (sizeof as built, EIGEN_DONT_VECTORIZE): x86-64 float/SmallBoardCaps
-// 51 336 B, float/DefaultCaps 293 536 B, double/DefaultCaps 546 768 B;
-// Cortex-M7 float 51 168 B and 293 312 B (docs/results/bench/footprint.json). The largest
+// 52 712 B, float/DefaultCaps 339 936 B, double/DefaultCaps 626 224 B;
+// Cortex-M7 float 52 416 B and 339 200 B (docs/results/bench/footprint.json). The largest
 // parts: per-track window beliefs, the stored scans, the BP messages and the
 // output queue.
 //
