@@ -20,6 +20,7 @@
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/model_constants.h"
 #include "mptrack/mfbp/track_slot.h"
+#include "mptrack/mfbp/weaker_clutter.h"
 #include "mptrack/model/mahalanobis.h"
 #include "mptrack/model/polar_measurement.h"
 #include "mptrack/track_report.h"
@@ -81,24 +82,16 @@ std::size_t deletion_run(const TrackSlot<T, Caps>& t, std::size_t k, std::uint64
                          const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p) {
   if (!t.confirmed || !(p.delete_run_in_clutter > p.delete_run)) return p.delete_run;
   const Vec2<T> z = model::polar_of_state(t.xs[k]);
-  const T snr = p.amplitude.use_amplitude ? t.igs[k].mean() - T(1) : T(0);
+  // Mean total powers E[1 + SNR] against E[1 + CNR] (for_each_gaussian_component's);
+  // without amplitude every component counts (SNR 0).
+  const T varsigma_t = p.amplitude.use_amplitude ? t.igs[k].mean() : T(1);
   bool inside = false;
-  const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T cnr) {
+  const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T varsigma_c) {
     const model::Mahalanobis2<T> gate(cov);
-    if (inside || !gate.valid() || cnr < snr) return;
+    if (inside || !gate.valid() || varsigma_c < varsigma_t) return;
     inside = gate.distance2(z(0) - mu(0), model::wrap_angle(z(1) - mu(1))) <= p.clutter_gate_chi2;
   };
-  if (p.clutter_mode == ClutterMode::kKnownMap) {
-    const std::size_t nk = known_components(p, Caps::kMaxClutterComponents);
-    for (std::size_t c = 0; c < nk; ++c) {
-      const auto& kc = p.known_clutter.components[c];
-      if (kc.produces_at(time_us)) consider(kc.mean, kc.covariance, kc.cnr);
-    }
-  } else if (estimate_clutter(p)) {
-    for (const auto& cs : cl.comps) {
-      if (cs.alive) consider(cs.nws[k].mu, cs.nws[k].expected_covariance(), cs.igs[k].mean() - T(1));
-    }
-  }
+  for_each_gaussian_component(k, time_us, cl, p, consider);
   return inside ? p.delete_run_in_clutter : p.delete_run;
 }
 
