@@ -33,6 +33,7 @@ struct CompareConfig {
   std::uint64_t seed = 1;
   double clutter_scale = 1.0;
   std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
+  std::vector<std::string> rfs_params;   ///< RfsFilterParams overrides "name=value" (gmphd, gmcphd, cbmember)
   double ospa_cutoff_m = 0.0;         ///< c [m]; 0 = the scenario's (see default_ospa())
   double ospa_order = 0.0;            ///< p; 0 = the scenario's
   std::string out_dir;                ///< "" = write nothing

@@ -50,6 +50,7 @@ struct TrackerSetup {
   scenario::ScenarioSpec spec;           ///< the scenario (region, noise, threshold, known clutter)
   double clutter_scale = 1.0;            ///< applied to known clutter rates (mfbp-kce/nce)
   std::vector<std::string> mfbp_params;  ///< "name=value" MfbpParams overrides (--mfbp-param)
+  std::vector<std::string> rfs_params;   ///< "name=value" RfsFilterParams overrides (--rfs-param)
   /// The raw-ADC scenario behind `spec` (its measurement-level view), or
   /// nullptr: what raw-frame trackers configure their signal model from.
   std::shared_ptr<const adc::AdcScenario> raw_scenario;

@@ -144,6 +144,7 @@ void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
                        {"min_track_scans", s.scoring.min_track_scans},
                        {"nvt", t.nvt()},
                        {"nft", t.nft()},
+                       {"nft_in_clutter", t.nft_in_clutter()},
                        {"valid_tracks_per_run", t.runs > 0 ? static_cast<double>(t.valid_tracks) / t.runs : 0.0},
                        {"tpd", t.tpd()},
                        {"ttl_scans", t.ttl_scans()},

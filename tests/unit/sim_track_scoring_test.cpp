@@ -347,3 +347,71 @@ TEST_CASE("track scoring totals: the confirmation delay per target id averages t
   CHECK(t.ttl_scans() == doctest::Approx(11.0 / 3.0));
   CHECK(t.ttl_scans_of(3) == doctest::Approx(0.0));  // no such target
 }
+
+namespace {
+
+/// Polar clutter region on scan k: range 10 km, azimuth 0, sigma 100 m x 0.01 rad.
+ClutterRegion polar_region(std::uint32_t k) { return ClutterRegion{k, true, 10000.0, 0.0, 1e4, 0.0, 1e-4}; }
+
+}  // namespace
+
+TEST_CASE("track scoring: a false track first confirmed inside a clutter region counts in clutter, one outside not") {
+  Run r(2);
+  // Range error 50 m: d^2 = 0.25. Azimuth 0.05 rad: d^2 = 25 > 5.991.
+  r.track(1, 5, 10050.0, 0.0);
+  r.track(1, 6, 10000.0 * std::cos(0.05), 10000.0 * std::sin(0.05));
+  TrackScoringParams p = gate(50.0);
+  p.clutter_regions = {polar_region(1)};
+  const RunTrackScore s = score_run(r.scans, r.est, p);
+  CHECK(s.false_tracks == 2);
+  CHECK(s.false_tracks_in_clutter == 1);
+}
+
+TEST_CASE("track scoring: the clutter region is judged on the scan the false track is first confirmed") {
+  Run r(2);
+  r.track(1, 5, 10050.0, 0.0);  // inside the region's ellipse, but on scan 1
+  r.track(2, 5, 10050.0, 0.0);
+  TrackScoringParams p = gate(50.0);
+  p.clutter_regions = {polar_region(2)};
+  CHECK(score_run(r.scans, r.est, p).false_tracks_in_clutter == 0);
+}
+
+TEST_CASE("track scoring: a valid track inside a clutter region is not a false track in clutter") {
+  Run r(1);
+  r.target(1, 1, 10050.0, 0.0);
+  r.track(1, 5, 10050.0, 0.0);
+  TrackScoringParams p = gate(50.0);
+  p.clutter_regions = {polar_region(1)};
+  const RunTrackScore s = score_run(r.scans, r.est, p);
+  CHECK(s.valid_tracks == 1);
+  CHECK(s.false_tracks_in_clutter == 0);
+}
+
+TEST_CASE("track scoring: a Cartesian clutter region is the 95 % ellipse in x/y") {
+  const ClutterRegion c{1, false, 0.0, 0.0, 1e4, 0.0, 1e4};  // sigma 100 m per axis
+  CHECK(inside_clutter_region(c, 150.0, 150.0));             // d^2 = 4.5
+  CHECK_FALSE(inside_clutter_region(c, 200.0, 200.0));       // d^2 = 8
+}
+
+TEST_CASE("track scoring: the scenario's Gaussian component gives one region per scan of its lifetime") {
+  sc::ScenarioSpec spec;
+  sc::ClutterSpec u;
+  u.uniform = true;
+  sc::ClutterSpec g;
+  g.mean_range_m = 30000.0;
+  g.mean_azimuth_deg = 90.0;
+  g.sigma_range_m = 2500.0;
+  g.sigma_azimuth_deg = 5.0;
+  g.birth_scan = 3;
+  g.death_scan = 5;
+  spec.clutter = {u, g};
+  const TrackScoringParams p = track_scoring_params(spec, 631.0);
+  REQUIRE(p.clutter_regions.size() == 3);
+  CHECK(p.clutter_regions[0].scan == 3);
+  CHECK(p.clutter_regions[2].scan == 5);
+  CHECK(p.clutter_regions[0].mean1 == doctest::Approx(std::acos(0.0)));
+  CHECK(p.clutter_regions[0].cov00 == doctest::Approx(2500.0 * 2500.0));
+  // 2.4 sigma in range (d^2 = 5.76) is inside, 2.5 sigma (6.25) is not.
+  CHECK(inside_clutter_region(p.clutter_regions[0], 0.0, 30000.0 + 2.4 * 2500.0));
+  CHECK_FALSE(inside_clutter_region(p.clutter_regions[0], 0.0, 30000.0 + 2.5 * 2500.0));
+}

@@ -98,6 +98,7 @@ void add_options(CLI::App& cmd, CompareArgs& a) {
   cmd.add_option("--ospa-p", a.config.ospa_order, "OSPA/GOSPA order p (default: 1 for seed001, 2 for seed000)")
       ->check(number_in(1.0, 64.0));
   cmd.add_option("--mfbp-param", a.config.mfbp_params, kMfbpParamHelp);
+  cmd.add_option("--rfs-param", a.config.rfs_params, kRfsParamHelp);
   cmd.add_option("--scr", a.scr, "seed003-sea scenarios: comma-separated SCRs [dB], one table column each "
                  "(default -20,-16,...,20); trackers default to mfbp,mfbp-nn,nemp");
 }

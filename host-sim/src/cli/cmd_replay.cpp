@@ -62,7 +62,7 @@ Subcommand add_replay_command(CLI::App& app) {
       "Example: mptrack-sim replay --detections rec.csv --scenario seed000-s2 --tracker mfbp --out out/rec");
   cmd->add_option("--detections", *detections, "detections file: CSV, or JSON if the name ends in .json")->required()->check(CLI::ExistingFile);
   return Subcommand{cmd, [detections](const RunOptions& o) { return run_replay(*detections, o); },
-                    {"--scenario", "--scenario-file", "--tracker", "--out", "--csv-runs", "--mfbp-param", "--scans",
+                    {"--scenario", "--scenario-file", "--tracker", "--out", "--csv-runs", "--mfbp-param", "--rfs-param", "--scans",
                      "--clutter-scale", "--no-plot", "--no-progress"}};
 }
 

@@ -97,6 +97,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(CLI::IsMember({"keep", "drop"}));
   app.add_option("--csv-runs", o.run.csv_runs, "write CSV rows for the first N runs only (-1 = all)")->capture_default_str();
   app.add_option("--mfbp-param", o.run.mfbp_params, kMfbpParamHelp);
+  app.add_option("--rfs-param", o.run.rfs_params, kRfsParamHelp);
   app.add_option("--scr", o.scr_db, "seed003-sea scenarios: every target's signal-to-clutter ratio [dB] (default 0)");
   app.add_flag("--no-plot", o.no_plot, "do not write plot.svg");
   app.add_flag("--no-progress", o.no_progress, "no progress output on stderr");

@@ -81,6 +81,8 @@ Subcommand add_replay_command(CLI::App& app);  // cmd_replay.cpp
 // Shared by several commands (cli_common.cpp).
 /// Help text of --mfbp-param (the same on every command that takes it).
 extern const char* const kMfbpParamHelp;
+/// Help text of --rfs-param.
+extern const char* const kRfsParamHelp;
 /// "10/3", "20" or "3.5" -> double; throws std::runtime_error naming `flag`.
 double parse_ratio(const std::string& text, const char* flag);
 /// True for a built-in raw-ADC name (file "") or a file with the raw-ADC schema.

@@ -156,12 +156,62 @@ struct TargetFollower {
 
 }  // namespace
 
+bool inside_clutter_region(const ClutterRegion& c, double px, double py) {
+  double e0 = px - c.mean0, e1 = py - c.mean1;
+  if (c.polar) {
+    e0 = std::hypot(px, py) - c.mean0;
+    e1 = std::remainder(std::atan2(py, px) - c.mean1, kTwoPi);
+  }
+  const double det = c.cov00 * c.cov11 - c.cov01 * c.cov01;
+  if (!(det > 0.0)) return false;
+  const double d2 = (c.cov11 * e0 * e0 - 2.0 * c.cov01 * e0 * e1 + c.cov00 * e1 * e1) / det;
+  return d2 <= kClutterRegionChi2;
+}
+
 TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, double ospa_cutoff_m) {
   TrackScoringParams p;
   p.gate_m = ospa_cutoff_m;
   p.min_track_scans = spec.space == scenario::MeasurementSpace::kOthr ? 5U : 1U;
+  if (spec.space == scenario::MeasurementSpace::kOthr) return p;
+  const bool polar = spec.space != scenario::MeasurementSpace::kCartesian;
+  for (const scenario::ClutterSpec& c : spec.clutter) {
+    if (c.uniform) continue;
+    for (std::uint32_t k = c.birth_scan; k <= c.death_scan; ++k) {
+      const scenario::ClutterAtScan a = scenario::clutter_at_scan(spec, c, k);
+      ClutterRegion r{k, polar, a.mean_x_m, a.mean_y_m, a.cov_xx, a.cov_xy, a.cov_yy};
+      if (polar) r = ClutterRegion{k, polar, a.mean_range_m, a.mean_azimuth_rad, a.cov_rr, a.cov_ra, a.cov_aa};
+      p.clutter_regions.push_back(r);
+    }
+  }
   return p;
 }
+
+namespace {
+
+/// False tracks of the run whose first confirmed position lies in a clutter
+/// region of that scan.
+std::uint32_t count_false_in_clutter(const std::vector<EstimateOut>& by_scan, std::size_t n,
+                                     const std::map<std::uint32_t, bool>& valid,
+                                     const std::vector<ClutterRegion>& regions) {
+  std::map<std::uint32_t, bool> seen;  // false track id -> judged
+  std::uint32_t count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const TrackOut& t : by_scan[i].tracks) {
+      const auto v = valid.find(t.id);
+      if (!t.confirmed || v == valid.end() || v->second || seen.count(t.id) != 0) continue;
+      seen[t.id] = true;
+      for (const ClutterRegion& r : regions) {
+        if (r.scan == i + 1 && inside_clutter_region(r, t.px, t.py)) {
+          ++count;
+          break;
+        }
+      }
+    }
+  }
+  return count;
+}
+
+}  // namespace
 
 RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
                         const TrackScoringParams& params) {
@@ -177,6 +227,7 @@ RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::
 
   RunTrackScore run;
   const std::map<std::uint32_t, bool> valid = classify_tracks(per_scan, params.min_track_scans, run);
+  run.false_tracks_in_clutter = count_false_in_clutter(by_scan, n, valid, params.clutter_regions);
   std::map<std::uint32_t, std::size_t> index;  // target id -> followers slot
   std::vector<TargetFollower> followers;
   for (std::size_t i = 0; i < n; ++i) {
@@ -210,6 +261,7 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
   ++runs;
   valid_tracks += run.valid_tracks;
   false_tracks += run.false_tracks;
+  false_tracks_in_clutter += run.false_tracks_in_clutter;
   targets_with_valid_track += run.targets_with_valid_track;
   for (const TargetScore& t : run.targets) {
     ++targets;
@@ -251,6 +303,9 @@ double ratio(double num, std::uint64_t den) { return den > 0 ? num / static_cast
 
 double TrackScoreTotals::nvt() const { return ratio(static_cast<double>(targets_with_valid_track), runs); }
 double TrackScoreTotals::nft() const { return ratio(static_cast<double>(false_tracks), runs); }
+double TrackScoreTotals::nft_in_clutter() const {
+  return ratio(static_cast<double>(false_tracks_in_clutter), runs);
+}
 double TrackScoreTotals::tpd() const { return ratio(static_cast<double>(covered_scans), alive_scans); }
 double TrackScoreTotals::ttl_scans() const { return ratio(static_cast<double>(latency_scans), targets_tracked); }
 double TrackScoreTotals::aee_range_m() const { return ratio(abs_range_err_sum_m, covered_scans); }

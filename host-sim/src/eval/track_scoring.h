@@ -20,6 +20,24 @@
 
 namespace mptrack::sim {
 
+/// Where a Gaussian clutter component of the scenario is on one scan, for
+/// counting the false tracks that start inside it (docs/algorithms/metrics.md
+/// §Track scores). Polar: [range m, azimuth rad]; Cartesian: [x m, y m].
+struct ClutterRegion {
+  std::uint32_t scan = 0;  ///< 1-based
+  bool polar = true;
+  double mean0 = 0.0, mean1 = 0.0;
+  double cov00 = 0.0, cov01 = 0.0, cov11 = 0.0;
+};
+
+/// A false track is "in clutter" if its first confirmed position lies within
+/// this squared Mahalanobis distance of a component: the 95 % region of a
+/// 2-D Gaussian.
+inline constexpr double kClutterRegionChi2 = 5.991;
+
+/// Is (px, py) [m], on the region's scan, inside its kClutterRegionChi2 ellipse?
+bool inside_clutter_region(const ClutterRegion& c, double px, double py);
+
 struct TrackScoringParams {
   double gate_m = 0.0;                ///< a track scores a target only within this distance [m]
   std::uint32_t min_track_scans = 1;  ///< shorter confirmed tracks are ignored (seed 002: 5)
@@ -27,11 +45,15 @@ struct TrackScoringParams {
   /// within the gate is kept before the optimal assignment of the rest
   /// (false: every scan assigned afresh, the rule before session 7).
   bool keep_pairs = true;
+  /// The scenario's Gaussian clutter components on every scan they exist
+  /// (track_scoring_params); empty: no false track counts as in clutter.
+  std::vector<ClutterRegion> clutter_regions;
 };
 
 /// The scenario's scoring: gate = the OSPA cut-off c of the run; tracks of
 /// OTHR scenarios count from 5 confirmed scans (seed 002 Sec. IV-B), others
-/// from 1.
+/// from 1; the regions of its Gaussian clutter components (measurement-level
+/// scenarios; OTHR ones have none).
 TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, double ospa_cutoff_m);
 
 /// Scans after a target's birth that the settled coverage does not judge
@@ -63,6 +85,7 @@ struct RunTrackScore {
   std::uint32_t scored_tracks = 0;    ///< confirmed for at least min_track_scans scans
   std::uint32_t valid_tracks = 0;     ///< scored tracks assigned to one target for at least half their scans
   std::uint32_t false_tracks = 0;     ///< scored tracks that are not valid (clutter, ghosts)
+  std::uint32_t false_tracks_in_clutter = 0;  ///< of those, the ones first confirmed inside a clutter region
   std::uint32_t targets_with_valid_track = 0;  ///< NVT of the run: distinct targets some valid track follows
   double amota = 0.0;                 ///< AMOTA of the run, recall-normalised (eval/amota.h)
   double amota_unscaled = 0.0;        ///< the same, unscaled (AmotaScore::unscaled)
@@ -101,6 +124,7 @@ struct TrackScoreTotals {
   std::uint64_t alive_scans = 0, covered_scans = 0;
   std::uint64_t latency_scans = 0;                 ///< sum of first_covered - birth over tracked targets
   std::uint64_t valid_tracks = 0, false_tracks = 0, targets_with_valid_track = 0;
+  std::uint64_t false_tracks_in_clutter = 0;
   std::uint64_t id_switches = 0, fragmentations = 0, track_breaks = 0;
   double abs_range_err_sum_m = 0.0, abs_bearing_err_sum_rad = 0.0;
   double sq_range_err_sum_m2 = 0.0, sq_velocity_err_sum_m2ps2 = 0.0;
@@ -121,6 +145,7 @@ struct TrackScoreTotals {
   void add(const RunTrackScore& run);
   double nvt() const;                ///< targets with a valid track, mean per run
   double nft() const;                ///< false tracks, mean per run
+  double nft_in_clutter() const;     ///< false tracks first confirmed inside a Gaussian clutter component, per run
   double tpd() const;                ///< covered / alive target-scans
   double ttl_scans() const;          ///< mean scans from birth to first coverage (tracked targets)
   double aee_range_m() const;        ///< mean |ground range error| over covered target-scans [m]

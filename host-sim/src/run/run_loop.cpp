@@ -23,6 +23,7 @@ std::unique_ptr<TrackerAdapter> make_initialised(const LoopConfig& cfg, const st
   setup.spec = spec;
   setup.clutter_scale = cfg.clutter_scale;
   setup.mfbp_params = cfg.mfbp_params;
+  setup.rfs_params = cfg.rfs_params;
   setup.raw_scenario = cfg.raw_scenario;
   setup.sea_scenario = cfg.sea_scenario;
   error = tracker->init(setup);
@@ -51,6 +52,7 @@ LoopConfig one_tracker_loop(const TrackerRunOptions& o, const std::string& scena
   loop.runs = o.runs;
   loop.seed = o.seed;
   loop.mfbp_params = o.mfbp_params;
+  loop.rfs_params = o.rfs_params;
   loop.progress_label = scenario_name + " " + o.tracker;
   loop.progress = o.progress;
   return loop;

@@ -31,6 +31,7 @@ struct LoopConfig {
   std::uint64_t seed = 1;                ///< reported in the summaries (the source draws with it)
   double clutter_scale = 1.0;            ///< reported, and given to the adapters
   std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
+  std::vector<std::string> rfs_params;   ///< RfsFilterParams overrides "name=value" (gmphd, gmcphd, cbmember)
   double ospa_cutoff_m = kOspaCutoff_m;  ///< OSPA/GOSPA c [m]
   double ospa_order = kOspaOrder;        ///< OSPA/GOSPA p
   std::string progress_label;
@@ -46,6 +47,7 @@ struct TrackerRunOptions {
   std::uint32_t runs = 1;
   std::uint64_t seed = 1;
   std::vector<std::string> mfbp_params;  ///< MfbpParams overrides "name=value" (MF-BP trackers)
+  std::vector<std::string> rfs_params;   ///< RfsFilterParams overrides "name=value" (gmphd, gmcphd, cbmember)
   std::string out_dir;                   ///< "" = write nothing
   std::int64_t csv_runs = -1;            ///< runs written to the CSVs (-1 = all)
   bool plot = true;                      ///< write plot.svg (run 0)

@@ -14,6 +14,7 @@
 #include "mptrack/math/detmath.h"
 #include "mptrack/phd/phd_filter.h"
 #include "trackers/core_adapter.h"
+#include "trackers/rfs_param_override.h"
 #include "tracker_registry.h"
 
 namespace mptrack::sim {
@@ -137,6 +138,8 @@ class IggmAdapter final : public CoreTrackerAdapter<Filter> {
     const bool polar = setup.spec.space != scenario::MeasurementSpace::kCartesian;
     RfsFilterParams<double> p = polar ? params_for(setup, variant_) : cartesian_params_for(setup, variant_);
     set_mixture_thresholds<Filter>(p, polar, variant_);
+    const std::string error = apply_rfs_params(p, setup.rfs_params);
+    if (!error.empty()) return error;
     return this->init_tracker(p, "rfs");
   }
 

@@ -3,7 +3,9 @@
 // tracker_params.h ("noise.range_std_m", "amplitude.use_amplitude").
 #include "trackers/mfbp_param_override.h"
 
-#include <cstdlib>
+#include <iterator>
+
+#include "trackers/param_override.h"
 
 namespace mptrack::sim {
 
@@ -11,18 +13,9 @@ namespace {
 
 using P = MfbpParams<double>;
 
-struct Real {
-  const char* name;
-  double& (*field)(P&);
-};
-struct Count {
-  const char* name;
-  std::size_t& (*field)(P&);
-};
-struct Flag {
-  const char* name;
-  bool& (*field)(P&);
-};
+using Real = RealField<P>;
+using Count = CountField<P>;
+using Flag = FlagField<P>;
 
 // One line per field a user tunes most; units and defaults in mfbp_params.h.
 const Real kReals[] = {
@@ -74,46 +67,13 @@ const Flag kFlags[] = {
 }  // namespace
 
 std::string apply_mfbp_param(MfbpParams<double>& p, const std::string& kv) {
-  const std::size_t eq = kv.find('=');
-  if (eq == std::string::npos) return "--mfbp-param " + kv + ": expected NAME=VALUE";
-  const std::string name = kv.substr(0, eq);
-  const std::string text = kv.substr(eq + 1);
   // NempParams fields ("nemp.rounds=3") are the nemp adapter's
   // (trackers/nemp_adapter.cpp); every MF-BP tracker of a compare gets the
   // same list, so the others pass them by.
-  if (name.rfind("nemp.", 0) == 0) return "";
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end == nullptr || *end != '\0') return "--mfbp-param " + name + ": '" + text + "' is not a number";
-  for (const Real& r : kReals) {
-    if (name == r.name) {
-      r.field(p) = v;
-      return "";
-    }
-  }
-  for (const Count& c : kCounts) {
-    if (name == c.name) {
-      if (!(v >= 0.0 && v <= 1e9 && v == static_cast<double>(static_cast<std::size_t>(v)))) {
-        return "--mfbp-param " + name + " = " + text + ": must be an integer in [0, 1e9]";
-      }
-      c.field(p) = static_cast<std::size_t>(v);
-      return "";
-    }
-  }
-  for (const Flag& f : kFlags) {
-    if (name == f.name) {
-      if (v != 0.0 && v != 1.0) return "--mfbp-param " + name + ": expected 0 or 1, got '" + text + "'";
-      f.field(p) = v != 0.0;
-      return "";
-    }
-  }
-  for (const Flag& f : kFlags) {  // "use_amplitude" for "amplitude.use_amplitude"
-    const std::string full = f.name;
-    if (full.size() > name.size() && full.compare(full.size() - name.size() - 1, std::string::npos, "." + name) == 0) {
-      return "--mfbp-param: unknown parameter '" + name + "'; did you mean '" + full + "' (0 or 1)?";
-    }
-  }
-  return "--mfbp-param: unknown parameter '" + name + "' (see host-sim/README.md)";
+  if (kv.rfind("nemp.", 0) == 0) return "";
+  static const ParamTable<P> kTable{"--mfbp-param", kReals, std::size(kReals), kCounts, std::size(kCounts),
+                                    kFlags, std::size(kFlags)};
+  return apply_param(p, kv, kTable);
 }
 
 std::string apply_mfbp_params(MfbpParams<double>& p, const std::vector<std::string>& overrides) {
