@@ -47,7 +47,31 @@ int run_two_targets(Filter& f, const RfsFilterParams<double>& p, int scans, int 
   return good;
 }
 
+/// Smallest reported existence min(w, 1) over `scans` scans of the two-target scene.
+double min_reported_existence(const RfsFilterParams<double>& p, int scans) {
+  auto f = std::make_unique<GmPhdFilter<double>>();
+  REQUIRE(f->init(p) == Status::kOk);
+  auto scan = std::make_unique<ScanD>();
+  double lowest = 2.0;
+  for (int k = 0; k < scans; ++k) {
+    phdtest::make_scan(*scan, k, kTruth, 2, 40, 11);
+    (void)f->step(*scan);
+    for (const auto& t : f->outputs()[0].tracks) lowest = t.existence < lowest ? t.existence : lowest;
+  }
+  return lowest;
+}
+
 }  // namespace
+
+TEST_CASE("GM-PHD reports only components heavier than extract_threshold, also above 0.5") {
+  RfsFilterParams<double> p = phdtest::seed001_params();
+  p.clutter_mode = ClutterMode::kEstimatedUniform;
+  // At the default 0.5 some reported component weighs at most 0.95 (so the
+  // stricter threshold below has something to hold back).
+  REQUIRE(min_reported_existence(p, 40) <= 0.95);
+  p.extract_threshold = 0.95;
+  CHECK(min_reported_existence(p, 40) > 0.95);
+}
 
 TEST_CASE("GM-PHD with amplitude tracks two targets in 40 clutter points per scan") {
   auto f = std::make_unique<GmPhdFilter<double>>();

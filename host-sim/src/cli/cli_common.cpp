@@ -13,7 +13,7 @@ const char* const kMfbpParamHelp =
     "accel_var_m2ps4=0.3, amplitude.use_amplitude=0 or unresolved_chi2=0; names in host-sim/README.md";
 const char* const kRfsParamHelp =
     "override an RfsFilterParams field for gmphd, gmcphd and cbmember (and their variants), NAME=VALUE "
-    "(repeatable), e.g. extract_threshold=0.9 or birth_rate=0.05; names in host-sim/README.md";
+    "(repeatable), e.g. extract_threshold=0.9 (PHD: report only components heavier than 0.9) or birth_rate=0.05; names in host-sim/README.md";
 
 double parse_ratio(const std::string& text, const char* flag) {
   const auto slash = text.find('/');

@@ -266,7 +266,9 @@ class PhdFilter : public rfs::GmFilterFrame<PhdFilter<T, Caps, Cardinalized>, T,
     // A component of weight w stands for round(w) targets (closely spaced
     // targets merge into one component): it is reported that many times,
     // copy k with id label + k * 2^24. CPHD: components heaviest first until
-    // the MAP cardinality is reached; PHD: every copy with w > extract_threshold.
+    // the MAP cardinality is reached; PHD: components with w > extract_threshold
+    // (at least one copy each, so a threshold below 0.5 reports lighter ones
+    // and one above 0.5 holds back a component until it is that sure).
     const std::size_t n = components_.size();
     const std::size_t want = Cardinalized ? cardinality_.map() : Caps::kMaxTargets;
     std::size_t reported = 0;
@@ -283,7 +285,7 @@ class PhdFilter : public rfs::GmFilterFrame<PhdFilter<T, Caps, Cardinalized>, T,
       std::size_t copies = rounded < static_cast<T>(Caps::kMaxTargets)
                                ? static_cast<std::size_t>(rounded > T(0) ? rounded : T(0))
                                : Caps::kMaxTargets;
-      if (!Cardinalized && copies == 0 && w > params_.extract_threshold) copies = 1;
+      if (!Cardinalized) copies = w > params_.extract_threshold ? (copies > 0 ? copies : 1) : 0;
       if (Cardinalized && copies == 0) copies = 1;
       for (std::size_t c = 0; c < copies && reported < want; ++c, ++reported) {
         if (add_track(e, components_[k], static_cast<std::uint32_t>(c)) != Status::kOk) break;
