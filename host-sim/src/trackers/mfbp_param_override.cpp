@@ -57,6 +57,7 @@ const Count kCounts[] = {
 };
 const Flag kFlags[] = {
     {"unresolved_pooling", [](P& p) -> bool& { return p.unresolved_pooling; }},
+    {"unresolved_taper", [](P& p) -> bool& { return p.unresolved_taper; }},
     {"association_cavity", [](P& p) -> bool& { return p.association_cavity; }},
     {"late_birth", [](P& p) -> bool& { return p.late_birth; }},
     {"amplitude.use_amplitude", [](P& p) -> bool& { return p.amplitude.use_amplitude; }},

@@ -218,12 +218,26 @@ bool track_moments(const TrackSlot<T, Caps>& t, std::size_t k, const ScanSlot<T,
   return true;
 }
 
+/// Weight of a neighbour at d2 < chi2 in an unresolved track's common mean:
+/// (1 - d2 / chi2)^2 with the taper (1 at d2 = 0, 0 with zero slope at
+/// the coupling edge), 1 without (docs/algorithms/mfbp.md §Departures).
+template <class T>
+T unresolved_weight(T d2, T chi2, bool taper) {
+  if (!taper) return T(1);
+  const T u = T(1) - d2 / chi2;
+  return u * u;
+}
+
 /// Our choice (docs/algorithms/mfbp.md §Departures): tracks whose
 /// predicted measurements are statistically indistinguishable,
 /// (z_a - z_b)^T (Sz_a + Sz_b)^-1 (z_a - z_b) < unresolved_chi2, score
-/// measurements against their common mean (the plain average over the track
-/// and such neighbours), so that position alone never decides which of them
-/// takes which measurement: amplitude, Doppler and visibility still do.
+/// measurements against their common mean (the average over the track and
+/// such neighbours, each weighted by unresolved_weight), so that position
+/// alone never decides which of them takes which measurement: amplitude,
+/// Doppler and visibility still do. The taper lets position back in as
+/// the tracks separate, instead of at one Mahalanobis distance: on S2's
+/// three-target crossing amplitude alone let the strong target's track take
+/// its weaker neighbours' detections (docs/results/issue18-clutter.md §KI ablation).
 /// Without it, on S1's unresolved pair (20 m apart, 210-300 m cross-range
 /// noise) the track that drifted left takes the left measurements, an
 /// outward pull that cancels the measurement's restoring pull (loop gain 1
@@ -247,8 +261,9 @@ void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Ca
       if (!dist.valid()) continue;
       const T d2 = dist.distance2(e);
       if (!(d2 < p.unresolved_chi2)) continue;
-      sum += Vec2<T>(ma.z(0) + e(0), ma.z(1) + e(1));
-      count += T(1);
+      const T w = unresolved_weight(d2, p.unresolved_chi2, p.unresolved_taper);
+      sum += w * Vec2<T>(ma.z(0) + e(0), ma.z(1) + e(1));
+      count += w;
       if (d2 < nearest) {
         nearest = d2;
         tracks[a].mate[k] = static_cast<std::uint16_t>(b + 1);
