@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstdint>
 #include <memory>
 
 #include "mptrack/caps.h"
@@ -27,6 +28,17 @@ Moments two_tracks(double apart) {
   return m;
 }
 
+/// Couples m with unresolved_chi2 = 4 and the given taper; returns the
+/// mate of track 0 on scan 0.
+std::uint16_t couple(Moments& m, bool taper) {
+  auto table = std::make_unique<TrackTable<double, DefaultCaps>>();  // too big for a small stack
+  MfbpParams<double> p;
+  p.unresolved_chi2 = 4.0;
+  p.unresolved_taper = taper;
+  couple_unresolved(m, *table, 0, p);
+  return (*table)[0].mate[0];
+}
+
 }  // namespace
 
 TEST_CASE("unresolved weight: 1 at zero distance, 1/4 halfway, 0 at the coupling edge; 1 without taper") {
@@ -38,37 +50,23 @@ TEST_CASE("unresolved weight: 1 at zero distance, 1/4 halfway, 0 at the coupling
 
 TEST_CASE("unresolved coupling with the taper: a neighbour at d^2 = 0.5 (chi2 4) weighs 49/64 in the common mean") {
   Moments m = two_tracks(1.0);
-  auto table = std::make_unique<TrackTable<double, DefaultCaps>>();  // too big for a small stack
-  TrackTable<double, DefaultCaps>& tracks = *table;
-  MfbpParams<double> p;
-  p.unresolved_chi2 = 4.0;
-  p.unresolved_taper = true;
-  couple_unresolved(m, tracks, 0, p);
+  const std::uint16_t mate = couple(m, true);
   // (0 + 49/64 * 1) / (1 + 49/64) = 49/113; symmetric for the other track.
   CHECK(m[0].z_shared(0) == doctest::Approx(49.0 / 113.0).epsilon(1e-15));
   CHECK(m[1].z_shared(0) == doctest::Approx(1.0 - 49.0 / 113.0).epsilon(1e-15));
-  CHECK(tracks[0].mate[0] == 2);  // mate is the neighbour's slot + 1
+  CHECK(mate == 2);  // mate is the neighbour's slot + 1
 }
 
 TEST_CASE("unresolved coupling without the taper is the plain average") {
   Moments m = two_tracks(1.0);
-  auto table = std::make_unique<TrackTable<double, DefaultCaps>>();  // too big for a small stack
-  TrackTable<double, DefaultCaps>& tracks = *table;
-  MfbpParams<double> p;
-  p.unresolved_chi2 = 4.0;
-  p.unresolved_taper = false;
-  couple_unresolved(m, tracks, 0, p);
+  (void)couple(m, false);
   CHECK(m[0].z_shared(0) == 0.5);
 }
 
 TEST_CASE("unresolved coupling leaves tracks at or beyond unresolved_chi2 on their own prediction") {
   Moments m = two_tracks(3.0);  // d^2 = 4.5 > 4
-  auto table = std::make_unique<TrackTable<double, DefaultCaps>>();  // too big for a small stack
-  TrackTable<double, DefaultCaps>& tracks = *table;
-  MfbpParams<double> p;
-  p.unresolved_chi2 = 4.0;
-  couple_unresolved(m, tracks, 0, p);
+  const std::uint16_t mate = couple(m, true);
   CHECK(m[0].z_shared(0) == 0.0);
   CHECK(m[1].z_shared(0) == 3.0);
-  CHECK(tracks[0].mate[0] == 0);
+  CHECK(mate == 0);
 }

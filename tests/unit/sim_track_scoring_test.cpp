@@ -353,6 +353,13 @@ namespace {
 /// Polar clutter region on scan k: range 10 km, azimuth 0, sigma 100 m x 0.01 rad.
 ClutterRegion polar_region(std::uint32_t k) { return ClutterRegion{k, true, 10000.0, 0.0, 1e4, 0.0, 1e-4}; }
 
+/// Scores r with a 50 m gate and the polar region of scan k.
+RunTrackScore score_with_region(const Run& r, std::uint32_t k) {
+  TrackScoringParams p = gate(50.0);
+  p.clutter_regions = {polar_region(k)};
+  return score_run(r.scans, r.est, p);
+}
+
 }  // namespace
 
 TEST_CASE("track scoring: a false track first confirmed inside a clutter region counts in clutter, one outside not") {
@@ -360,9 +367,7 @@ TEST_CASE("track scoring: a false track first confirmed inside a clutter region 
   // Range error 50 m: d^2 = 0.25. Azimuth 0.05 rad: d^2 = 25 > 5.991.
   r.track(1, 5, 10050.0, 0.0);
   r.track(1, 6, 10000.0 * std::cos(0.05), 10000.0 * std::sin(0.05));
-  TrackScoringParams p = gate(50.0);
-  p.clutter_regions = {polar_region(1)};
-  const RunTrackScore s = score_run(r.scans, r.est, p);
+  const RunTrackScore s = score_with_region(r, 1);
   CHECK(s.false_tracks == 2);
   CHECK(s.false_tracks_in_clutter == 1);
 }
@@ -371,18 +376,14 @@ TEST_CASE("track scoring: the clutter region is judged on the scan the false tra
   Run r(2);
   r.track(1, 5, 10050.0, 0.0);  // inside the region's ellipse, but on scan 1
   r.track(2, 5, 10050.0, 0.0);
-  TrackScoringParams p = gate(50.0);
-  p.clutter_regions = {polar_region(2)};
-  CHECK(score_run(r.scans, r.est, p).false_tracks_in_clutter == 0);
+  CHECK(score_with_region(r, 2).false_tracks_in_clutter == 0);
 }
 
 TEST_CASE("track scoring: a valid track inside a clutter region is not a false track in clutter") {
   Run r(1);
   r.target(1, 1, 10050.0, 0.0);
   r.track(1, 5, 10050.0, 0.0);
-  TrackScoringParams p = gate(50.0);
-  p.clutter_regions = {polar_region(1)};
-  const RunTrackScore s = score_run(r.scans, r.est, p);
+  const RunTrackScore s = score_with_region(r, 1);
   CHECK(s.valid_tracks == 1);
   CHECK(s.false_tracks_in_clutter == 0);
 }
