@@ -28,10 +28,11 @@ Moments two_tracks(double apart) {
   return m;
 }
 
-/// Couples m with unresolved_chi2 = 4 and the given taper; returns the
-/// mate of track 0 on scan 0.
-std::uint16_t couple(Moments& m, bool taper) {
+/// Couples m with unresolved_chi2 = 4 and the given taper, both tracks
+/// confirmed or both tentative; returns the mate of track 0 on scan 0.
+std::uint16_t couple(Moments& m, bool taper, bool confirmed = true) {
   auto table = std::make_unique<TrackTable<double, DefaultCaps>>();  // too big for a small stack
+  (*table)[0].confirmed = (*table)[1].confirmed = confirmed;
   MfbpParams<double> p;
   p.unresolved_chi2 = 4.0;
   p.unresolved_taper = taper;
@@ -48,13 +49,19 @@ TEST_CASE("unresolved weight: 1 at zero distance, 1/4 halfway, 0 at the coupling
   CHECK(unresolved_weight(2.0, 4.0, false) == 1.0);
 }
 
-TEST_CASE("unresolved coupling with the taper: a neighbour at d^2 = 0.5 (chi2 4) weighs 49/64 in the common mean") {
+TEST_CASE("unresolved coupling of confirmed tracks with the taper: a neighbour at d^2 = 0.5 (chi2 4) weighs 49/64 in the common mean") {
   Moments m = two_tracks(1.0);
   const std::uint16_t mate = couple(m, true);
   // (0 + 49/64 * 1) / (1 + 49/64) = 49/113; symmetric for the other track.
   CHECK(m[0].z_shared(0) == doctest::Approx(49.0 / 113.0).epsilon(1e-15));
   CHECK(m[1].z_shared(0) == doctest::Approx(1.0 - 49.0 / 113.0).epsilon(1e-15));
   CHECK(mate == 2);  // mate is the neighbour's slot + 1
+}
+
+TEST_CASE("unresolved coupling of tentative tracks is the plain average, taper or not") {
+  Moments m = two_tracks(1.0);
+  (void)couple(m, true, false);
+  CHECK(m[0].z_shared(0) == 0.5);
 }
 
 TEST_CASE("unresolved coupling without the taper is the plain average") {

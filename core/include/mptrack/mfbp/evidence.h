@@ -234,10 +234,13 @@ T unresolved_weight(T d2, T chi2, bool taper) {
 /// measurements against their common mean (the average over the track and
 /// such neighbours, each weighted by unresolved_weight), so that position
 /// alone never decides which of them takes which measurement: amplitude,
-/// Doppler and visibility still do. The taper lets position back in as
-/// the tracks separate, instead of at one Mahalanobis distance: on S2's
-/// three-target crossing amplitude alone let the strong target's track take
-/// its weaker neighbours' detections (docs/results/issue18-clutter.md §KI ablation).
+/// Doppler and visibility still do. For a confirmed track the taper lets
+/// position back in as the tracks separate, instead of at one Mahalanobis
+/// distance: on S2's three-target crossing amplitude alone let the strong
+/// target's track take its weaker neighbours' detections. Tentative tracks
+/// keep equal weights: several start on one target inside clutter, and
+/// tapered they compete by position and confirm a scan later
+/// (docs/results/issue18-clutter.md §KI ablation).
 /// Without it, on S1's unresolved pair (20 m apart, 210-300 m cross-range
 /// noise) the track that drifted left takes the left measurements, an
 /// outward pull that cancels the measurement's restoring pull (loop gain 1
@@ -261,7 +264,7 @@ void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Ca
       if (!dist.valid()) continue;
       const T d2 = dist.distance2(e);
       if (!(d2 < p.unresolved_chi2)) continue;
-      const T w = unresolved_weight(d2, p.unresolved_chi2, p.unresolved_taper);
+      const T w = unresolved_weight(d2, p.unresolved_chi2, p.unresolved_taper && tracks[a].confirmed);
       sum += w * Vec2<T>(ma.z(0) + e(0), ma.z(1) + e(1));
       count += w;
       if (d2 < nearest) {

@@ -129,9 +129,9 @@ struct MfbpParams {
                                       ///< less than this (Mahalanobis^2 under Sz_a + Sz_b) score
                                       ///< measurements from their common mean (see
                                       ///< couple_unresolved); 0 = off (paper)
-  bool unresolved_taper = true;       ///< Ours. Neighbours weigh (1 - d2 / unresolved_chi2)^2 in
-                                      ///< the common mean (unresolved_weight); false = equal
-                                      ///< weights (before 2026-12-07)
+  bool unresolved_taper = true;       ///< Ours. In a confirmed track's common mean neighbours
+                                      ///< weigh (1 - d2 / unresolved_chi2)^2 (unresolved_weight);
+                                      ///< false = equal weights (before 2026-12-07)
   bool unresolved_pooling = true;     ///< Ours. A track coupled by unresolved_chi2 updates its
                                       ///< kinematics on the pooled pseudo-measurement of itself and
                                       ///< its nearest unresolved neighbour (SNR, visibility and
