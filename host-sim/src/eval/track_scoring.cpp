@@ -5,9 +5,12 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 #include "eval/amota.h"
+#include "mptrack/model/mahalanobis.h"
+#include "mptrack/model/polar_measurement.h"
 
 namespace mptrack::sim {
 
@@ -157,14 +160,13 @@ struct TargetFollower {
 }  // namespace
 
 bool inside_clutter_region(const ClutterRegion& c, double px, double py) {
-  double e0 = px - c.mean0, e1 = py - c.mean1;
-  if (c.polar) {
-    e0 = std::hypot(px, py) - c.mean0;
-    e1 = std::remainder(std::atan2(py, px) - c.mean1, kTwoPi);
-  }
-  const double det = c.cov00 * c.cov11 - c.cov01 * c.cov01;
-  if (!(det > 0.0)) return false;
-  const double d2 = (c.cov11 * e0 * e0 - 2.0 * c.cov01 * e0 * e1 + c.cov00 * e1 * e1) / det;
+  Eigen::Matrix2d cov;
+  cov << c.cov00, c.cov01, c.cov01, c.cov11;
+  const model::Mahalanobis2<double> gate(cov);
+  if (!gate.valid()) return false;
+  const double d2 = c.polar ? gate.distance2(std::hypot(px, py) - c.mean0,
+                                             model::wrap_angle(std::atan2(py, px) - c.mean1))
+                            : gate.distance2(px - c.mean0, py - c.mean1);
   return d2 <= kClutterRegionChi2;
 }
 
@@ -178,9 +180,9 @@ TrackScoringParams track_scoring_params(const scenario::ScenarioSpec& spec, doub
     if (c.uniform) continue;
     for (std::uint32_t k = c.birth_scan; k <= c.death_scan; ++k) {
       const scenario::ClutterAtScan a = scenario::clutter_at_scan(spec, c, k);
-      ClutterRegion r{k, polar, a.mean_x_m, a.mean_y_m, a.cov_xx, a.cov_xy, a.cov_yy};
-      if (polar) r = ClutterRegion{k, polar, a.mean_range_m, a.mean_azimuth_rad, a.cov_rr, a.cov_ra, a.cov_aa};
-      p.clutter_regions.push_back(r);
+      p.clutter_regions.push_back(
+          polar ? ClutterRegion{k, true, a.mean_range_m, a.mean_azimuth_rad, a.cov_rr, a.cov_ra, a.cov_aa}
+                : ClutterRegion{k, false, a.mean_x_m, a.mean_y_m, a.cov_xx, a.cov_xy, a.cov_yy});
     }
   }
   return p;
@@ -193,13 +195,12 @@ namespace {
 std::uint32_t count_false_in_clutter(const std::vector<EstimateOut>& by_scan, std::size_t n,
                                      const std::map<std::uint32_t, bool>& valid,
                                      const std::vector<ClutterRegion>& regions) {
-  std::map<std::uint32_t, bool> seen;  // false track id -> judged
+  std::set<std::uint32_t> judged;  // false track ids already judged at their first confirmed scan
   std::uint32_t count = 0;
   for (std::size_t i = 0; i < n; ++i) {
     for (const TrackOut& t : by_scan[i].tracks) {
       const auto v = valid.find(t.id);
-      if (!t.confirmed || v == valid.end() || v->second || seen.count(t.id) != 0) continue;
-      seen[t.id] = true;
+      if (!t.confirmed || v == valid.end() || v->second || !judged.insert(t.id).second) continue;
       for (const ClutterRegion& r : regions) {
         if (r.scan == i + 1 && inside_clutter_region(r, t.px, t.py)) {
           ++count;

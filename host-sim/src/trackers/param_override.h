@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace mptrack::sim {
 
@@ -88,6 +89,16 @@ std::string apply_param(P& p, const std::string& kv, const ParamTable<P>& t) {
     return "";
   }
   return detail::unknown_param(t, name);
+}
+
+/// Applies every "name=value" in order through t; returns the first error or "".
+template <class P>
+std::string apply_params(P& p, const std::vector<std::string>& overrides, const ParamTable<P>& t) {
+  for (const std::string& kv : overrides) {
+    std::string error = apply_param(p, kv, t);
+    if (!error.empty()) return error;
+  }
+  return "";
 }
 
 }  // namespace mptrack::sim

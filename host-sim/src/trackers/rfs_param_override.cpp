@@ -36,11 +36,7 @@ const FlagField<P> kFlags[] = {
 
 std::string apply_rfs_params(RfsFilterParams<double>& p, const std::vector<std::string>& overrides) {
   static const ParamTable<P> kTable{"--rfs-param", kReals, std::size(kReals), nullptr, 0, kFlags, std::size(kFlags)};
-  for (const std::string& kv : overrides) {
-    std::string error = apply_param(p, kv, kTable);
-    if (!error.empty()) return error;
-  }
-  return "";
+  return apply_params(p, overrides, kTable);
 }
 
 }  // namespace mptrack::sim
