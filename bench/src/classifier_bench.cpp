@@ -1,6 +1,8 @@
 // Host latency of the seed 003 patch classifier (docs/algorithms/nemp.md
 // §Cost): features() per detection and target_probability() per NEMP round,
-// with the reference test weights (the cost does not depend on the values).
+// with the reference test weights (the cost does not depend on the values),
+// and the int8 g_M's features() (sea_features_q8.h, with the trained int8
+// set: there is no int8 test set).
 // Prints the median and the 99th percentile of `runs` timed calls; with
 // --out DIR also writes DIR/classifier.json (`./run bench`: build/bench-results/).
 //   mptrack-bench-classifier [runs] [--out DIR]
@@ -16,6 +18,8 @@
 
 #include "classify_reference_data.h"
 #include "mptrack/classify/sea_classifier.h"
+#include "mptrack/classify/sea_features_q8.h"
+#include "mptrack/classify/trained_weights.h"
 
 namespace {
 
@@ -35,7 +39,7 @@ Stats report(const char* what, std::vector<double>& us, std::size_t macs) {
 }
 
 /// DIR/classifier.json: latency per detection (features) and per NEMP round (MLP), MACs, sizes.
-bool write_json(const std::string& dir, std::size_t runs, Stats feat, Stats mlp) {
+bool write_json(const std::string& dir, std::size_t runs, Stats feat, Stats mlp, Stats feat_q8) {
   const std::string path = dir + "/classifier.json";
   std::FILE* f = std::fopen(path.c_str(), "w");
   if (f == nullptr) return false;
@@ -44,10 +48,13 @@ bool write_json(const std::string& dir, std::size_t runs, Stats feat, Stats mlp)
                "  \"features_us\": {\"p50\": %.3f, \"p99\": %.3f, \"macs\": %zu},\n"
                "  \"target_probability_us\": {\"p50\": %.4f, \"p99\": %.4f, \"macs\": %zu},\n"
                "  \"parameters\": %zu,\n  \"parameter_bytes\": %zu,\n  \"scratch_bytes\": %zu,\n"
-               "  \"object_bytes\": %zu\n}\n",
+               "  \"object_bytes\": %zu,\n"
+               "  \"features_int8_us\": {\"p50\": %.3f, \"p99\": %.3f},\n"
+               "  \"int8_weight_bytes\": %zu,\n  \"int8_scratch_bytes\": %zu,\n  \"int8_object_bytes\": %zu\n}\n",
                runs, feat.p50, feat.p99, cl::SeaClassifier::kFeatureMacs, mlp.p50, mlp.p99,
                cl::SeaClassifier::kMlpMacs, cl::kNumParameters, cl::kNumParameters * sizeof(float),
-               cl::SeaClassifier::kScratchBytes, sizeof(cl::SeaClassifier));
+               cl::SeaClassifier::kScratchBytes, sizeof(cl::SeaClassifier), feat_q8.p50, feat_q8.p99,
+               cl::SeaFeaturesQ8::kWeightBytes, cl::SeaFeaturesQ8::kScratchBytes, sizeof(cl::SeaFeaturesQ8));
   return std::fclose(f) == 0;
 }
 
@@ -86,7 +93,22 @@ int main(int argc, char** argv) {
   const Stats mlp = report("target_probability()", t_mlp, cl::SeaClassifier::kMlpMacs);
   std::printf("parameters %zu (%zu bytes float32), scratch %zu bytes, object %zu bytes\n", cl::kNumParameters,
               cl::kNumParameters * sizeof(float), cl::SeaClassifier::kScratchBytes, sizeof(cl::SeaClassifier));
-  if (!out_dir.empty() && !write_json(out_dir, runs, feat, mlp)) {
+  Stats feat_q8;
+  if (cl::kHaveTrainedQ8Weights) {
+    static cl::SeaFeaturesQ8 q;
+    if (q.init(cl::trained_q8_weights()) != mptrack::Status::kOk) return 1;
+    std::vector<double> t_q8(runs);
+    for (std::size_t r = 0; r < runs; ++r) {
+      const auto t0 = Clock::now();
+      if (q.features(mptrack::test::classify_ref::kPatch2, f) != mptrack::Status::kOk) return 1;
+      t_q8[r] = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+      sink = sink + f[0];
+    }
+    feat_q8 = report("int8 features()", t_q8, cl::SeaClassifier::kFeatureMacs);
+    std::printf("int8 g_M: weights %zu bytes, scratch %zu bytes, object %zu bytes\n", cl::SeaFeaturesQ8::kWeightBytes,
+                cl::SeaFeaturesQ8::kScratchBytes, sizeof(cl::SeaFeaturesQ8));
+  }
+  if (!out_dir.empty() && !write_json(out_dir, runs, feat, mlp, feat_q8)) {
     std::fprintf(stderr, "%s/classifier.json: cannot write\n", out_dir.c_str());
     return 1;
   }

@@ -8,6 +8,7 @@
 #include "mptrack/cbmember/cbmember_filter.h"
 #include "mptrack/classify/ds_fusion.h"
 #include "mptrack/classify/sea_classifier.h"
+#include "mptrack/classify/sea_features_q8.h"
 #include "mptrack/frontend/front_end.h"
 #include "mptrack/frontend/mimo_spectrum.h"
 #include "mptrack/model/mimo_atom.h"
@@ -117,7 +118,7 @@ std::size_t frontend_cfar_line_instance(const frontend::Cfar& c, const float* li
   return frontend::cfar_line(c, line, len, out);
 }
 
-// seed 003 patch classifier (float only) and the DS fusion
+// seed 003 patch classifier (float, and the int8 g_M) and the DS fusion
 template void classify::conv_relu_pool<1, classify::kPatchRange, classify::kPatchDoppler, classify::kConv1Out,
                                        classify::kConv1Kh, classify::kConv1Kw, 1, 4>(const float*, const float*,
                                                                                      const float*, float*);
@@ -131,6 +132,11 @@ Status classify_instantiation_probe(classify::SeaClassifier& c, const float* pat
   const Status s = c.features(patch, f);
   f[0] = c.target_probability(f, 0.5f);
   return s;
+}
+/// Keeps the int8 g_M's code in this object for the nm check.
+Status classify_q8_instantiation_probe(classify::SeaFeaturesQ8& q, const std::uint8_t* codes, classify::Features& f);
+Status classify_q8_instantiation_probe(classify::SeaFeaturesQ8& q, const std::uint8_t* codes, classify::Features& f) {
+  return q.features(codes, f);
 }
 
 // NEMP state of MF-BP's association (seed 003), float on targets

@@ -26,11 +26,11 @@ double SeaTrackErrors::rmse_velocity_mps() const {
 double match_range_std_m(const sea::SeaScenario& s) { return s.range_bin_m; }
 double match_rate_std_mps(const sea::SeaScenario& s) { return s.doppler_bin_mps(); }
 
-bool sea_trackers_need_features(const std::vector<std::string>& trackers) {
+FeatureExtractor sea_features_for(const std::vector<std::string>& trackers, FeatureExtractor precision) {
   for (const std::string& t : trackers) {
-    if (t == "mfbp-nn" || t == "nemp") return true;
+    if (t == "mfbp-nn" || t == "nemp") return precision;
   }
-  return false;
+  return FeatureExtractor::kNone;
 }
 
 namespace {
@@ -166,7 +166,7 @@ void write_map_files(const std::string& dir, const SeaScanSource& source, const 
 
 SeaSummary run_sea_monte_carlo(const SeaRunConfig& cfg) {
   const std::vector<std::string> trackers{cfg.tracker};
-  SeaScanSource source(cfg.scenario, cfg.seed, sea_trackers_need_features(trackers), cfg.map_scan);
+  SeaScanSource source(cfg.scenario, cfg.seed, sea_features_for(trackers, cfg.classifier), cfg.map_scan);
   LoopConfig loop = sea_loop(source, trackers, cfg.runs, cfg.seed, cfg.mfbp_params, cfg.progress);
   check_loop_config(loop);  // before the output directory is created
   RunOutputs outputs(cfg, source.spec());
@@ -197,7 +197,7 @@ std::vector<std::vector<SeaSummary>> run_sea_compare(const SeaCompareConfig& cfg
   for (double scr : cfg.scr_db) {
     sea::SeaScenario sc = cfg.scenario;
     sc.scr_db = scr;
-    SeaScanSource source(sc, cfg.seed, sea_trackers_need_features(trackers), 0);
+    SeaScanSource source(sc, cfg.seed, sea_features_for(trackers, cfg.classifier), 0);
     const LoopConfig loop = sea_loop(source, trackers, cfg.runs, cfg.seed, cfg.mfbp_params, cfg.progress);
     SeaErrorObserver errors(trackers.size(), match_range_std_m(sc), match_rate_std_mps(sc));
     out.push_back(finish(run_loop(source, loop, {&errors}), source, errors));

@@ -20,6 +20,7 @@
 #include "eval/aggregator.h"
 #include "mptrack/sea/sea_scenario.h"
 #include "run/run_loop.h"
+#include "run/sea_source.h"
 
 namespace mptrack::sim {
 
@@ -53,10 +54,12 @@ struct SeaSummary {
 struct SeaRunConfig : TrackerRunOptions {
   sea::SeaScenario scenario;       ///< scr_db set by --scr
   std::uint32_t map_scan = 8;      ///< run 0's scan whose range-Doppler map is written (rd_map.npy)
+  FeatureExtractor classifier = FeatureExtractor::kFloat;  ///< --classifier float|int8
 };
 
-/// True if one of `trackers` needs the classifier's features (mfbp-nn, nemp).
-bool sea_trackers_need_features(const std::vector<std::string>& trackers);
+/// `precision` if one of `trackers` needs the classifier's features
+/// (mfbp-nn, nemp), else FeatureExtractor::kNone.
+FeatureExtractor sea_features_for(const std::vector<std::string>& trackers, FeatureExtractor precision);
 
 /// One tracker, cfg.runs runs; writes DIR/{summary.json, truth.csv,
 /// measurements.csv, tracks.csv, metrics.csv, plot.svg, rd_map.npy,
@@ -71,6 +74,7 @@ struct SeaCompareConfig {
   std::uint64_t seed = 1;
   std::vector<std::string> mfbp_params;
   std::string out_dir;                ///< "" = write nothing
+  FeatureExtractor classifier = FeatureExtractor::kFloat;  ///< --classifier float|int8
   bool progress = true;
 };
 

@@ -29,7 +29,7 @@ mptrack::sea::SeaScenario short_scene(const char* name, double scr_db, std::uint
 }  // namespace
 
 TEST_CASE("sea source: one patch per measurement, truth on the boresight axis, the scenario's SCR") {
-  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 6.0, 2), 1, false, 0);
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 6.0, 2), 1, mptrack::sim::FeatureExtractor::kNone, 0);
   src.begin_run(0);
   REQUIRE(src.scans().size() == 2);
   const auto& s = src.scans()[1];
@@ -50,7 +50,7 @@ TEST_CASE("sea source: one patch per measurement, truth on the boresight axis, t
 }
 
 TEST_CASE("sea source: the same run gives the same scans at a second begin_run") {
-  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-b", 0.0, 2), 5, false, 0);
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-b", 0.0, 2), 5, mptrack::sim::FeatureExtractor::kNone, 0);
   src.begin_run(3);
   const auto first = src.scans();
   src.begin_run(3);
@@ -63,7 +63,7 @@ TEST_CASE("sea source: the same run gives the same scans at a second begin_run")
 
 TEST_CASE("sea source: features once per detection, equal to the classifier's on the patch") {
   if (!mptrack::classify::kHaveTrainedWeights) return;
-  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 0.0, 1), 1, true, 0);
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 0.0, 1), 1, mptrack::sim::FeatureExtractor::kFloat, 0);
   src.begin_run(0);
   const auto& s = src.scans()[0];
   REQUIRE(s.feature_size == mptrack::classify::kNumFeatures);
@@ -110,7 +110,7 @@ struct RecordedScene {
 
 RecordedScene record_scene(double scr_db, std::uint32_t scans) {
   RecordedScene r;
-  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", scr_db, scans), 1, false, 0);
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", scr_db, scans), 1, mptrack::sim::FeatureExtractor::kNone, 0);
   src.begin_run(0);
   r.scenario = src.sea_scenario();
   for (const auto& s : src.scans()) {
@@ -185,4 +185,20 @@ TEST_CASE("NEMP beliefs need the scene's patches") {
   r.scene.patches.clear();
   CHECK_THROWS_AS((void)mptrack::sim::scene_beliefs(mptrack::sim::BeliefSource::kNemp, r.scenario, r.scene),
                   std::runtime_error);
+}
+
+TEST_CASE("sea source: --classifier int8 features are the int8 g_M's on the detector's codes") {
+  if (!mptrack::classify::kHaveTrainedQ8Weights) return;
+  mptrack::sim::SeaScanSource src(short_scene("seed003-sea-a", 0.0, 1), 1, mptrack::sim::FeatureExtractor::kInt8, 0);
+  src.begin_run(0);
+  const auto& s = src.scans()[0];
+  REQUIRE(s.features.size() == s.measurements.size() * s.feature_size);
+  auto q = std::make_unique<mptrack::classify::SeaFeaturesQ8>();
+  REQUIRE(q->init(mptrack::classify::trained_q8_weights()) == mptrack::Status::kOk);
+  std::vector<std::uint8_t> codes(s.patch_size);
+  const std::size_t j = s.measurements.size() - 1;
+  for (std::size_t i = 0; i < s.patch_size; ++i) codes[i] = static_cast<std::uint8_t>(s.patches[j * s.patch_size + i]);
+  mptrack::classify::Features f{};
+  REQUIRE(q->features(codes.data(), f) == mptrack::Status::kOk);
+  for (std::size_t i = 0; i < f.size(); ++i) CHECK(f[i] == s.features[j * s.feature_size + i]);
 }

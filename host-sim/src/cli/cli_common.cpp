@@ -11,6 +11,9 @@ namespace mptrack::sim {
 const char* const kMfbpParamHelp =
     "override an MfbpParams field for the MF-BP trackers, NAME=VALUE (repeatable), e.g. "
     "accel_var_m2ps4=0.3, amplitude.use_amplitude=0 or unresolved_chi2=0; names in host-sim/README.md";
+const char* const kClassifierHelp =
+    "seed003-sea scenarios: the classifier's CNN for mfbp-nn and nemp, float or int8 (the quantised network of "
+    "./run quantise-classifier; docs/algorithms/nemp.md)";
 const char* const kRfsParamHelp =
     "override an RfsFilterParams field for gmphd, gmcphd and cbmember (and their variants), NAME=VALUE "
     "(repeatable), e.g. extract_threshold=0.9 (PHD: report only components heavier than 0.9) or birth_rate=0.05; names in host-sim/README.md";

@@ -23,6 +23,7 @@ struct CompareArgs {
   std::string trackers;
   std::uint32_t scans = 0;
   std::string scr;  ///< --scr list (sea scenes)
+  std::string classifier = "float";  ///< --classifier (sea scenes)
   CompareConfig config;
 };
 
@@ -51,10 +52,13 @@ int run_adc_compare_command(const CompareArgs& a, const RunOptions& o, const std
 int run_compare_command(const CompareArgs& a, const RunOptions& o) {
   const bool is_file = std::filesystem::is_regular_file(a.scenario);
   if (!is_file && is_sea_scenario(a.scenario)) {
+    RunOptions sea = o;
+    sea.classifier = a.classifier;
     return run_sea_compare_command(a.scenario, a.trackers, a.scr, a.config.runs, a.config.seed,
-                                   a.config.mfbp_params, a.config.out_dir, o);
+                                   a.config.mfbp_params, a.config.out_dir, sea);
   }
   if (!a.scr.empty()) throw std::runtime_error("--scr applies to the seed003-sea scenarios only");
+  if (a.classifier != "float") throw std::runtime_error("--classifier applies to the seed003-sea scenarios only");
   if (is_adc_scenario(is_file ? "" : a.scenario, is_file ? a.scenario : "")) {
     return run_adc_compare_command(a, o, is_file ? a.scenario : "");
   }
@@ -101,6 +105,7 @@ void add_options(CLI::App& cmd, CompareArgs& a) {
   cmd.add_option("--rfs-param", a.config.rfs_params, kRfsParamHelp);
   cmd.add_option("--scr", a.scr, "seed003-sea scenarios: comma-separated SCRs [dB], one table column each "
                  "(default -20,-16,...,20); trackers default to mfbp,mfbp-nn,nemp");
+  cmd.add_option("--classifier", a.classifier, kClassifierHelp)->capture_default_str()->check(CLI::IsMember({"float", "int8"}));
 }
 
 }  // namespace

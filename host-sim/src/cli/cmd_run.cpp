@@ -99,6 +99,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--mfbp-param", o.run.mfbp_params, kMfbpParamHelp);
   app.add_option("--rfs-param", o.run.rfs_params, kRfsParamHelp);
   app.add_option("--scr", o.scr_db, "seed003-sea scenarios: every target's signal-to-clutter ratio [dB] (default 0)");
+  app.add_option("--classifier", o.classifier, kClassifierHelp)->capture_default_str()->check(CLI::IsMember({"float", "int8"}));
   app.add_flag("--no-plot", o.no_plot, "do not write plot.svg");
   app.add_flag("--no-progress", o.no_progress, "no progress output on stderr");
   app.add_flag("--write-detections", o.run.write_detections,
@@ -109,6 +110,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 int run_default_command(const RunOptions& o) {
   if (o.scenario_file.empty() && is_sea_scenario(o.scenario_name)) return run_sea_command(o);
   if (o.scr_db != RunOptions::kNoScr) throw std::runtime_error("--scr applies to the seed003-sea scenarios only");
+  if (o.classifier != "float") throw std::runtime_error("--classifier applies to the seed003-sea scenarios only");
   if (is_adc_scenario(o.scenario_name, o.scenario_file)) return run_adc_scenario(o);
   check_raw_adc_only_flags(o.scenario_file.empty() ? o.scenario_name : o.scenario_file, o.rate_hz, o.frames);
   check_raw_adc_only_adc_flags(o.scenario_file.empty() ? o.scenario_name : o.scenario_file, o.adc_format,

@@ -43,11 +43,18 @@ std::vector<double> parse_scr_list(const std::string& text) {
   return out;
 }
 
+FeatureExtractor parse_classifier(const std::string& name) {
+  if (name == "float") return FeatureExtractor::kFloat;
+  if (name == "int8") return FeatureExtractor::kInt8;
+  throw std::runtime_error("--classifier: '" + name + "' is not float or int8");
+}
+
 }  // namespace
 
 int run_sea_command(const RunOptions& o) {
   SeaRunConfig cfg;
   static_cast<TrackerRunOptions&>(cfg) = o.run;
+  cfg.classifier = parse_classifier(o.classifier);
   cfg.plot = !o.no_plot;
   cfg.progress = !o.no_progress;
   cfg.scenario = sea_scenario_named(o.scenario_name);
@@ -84,6 +91,7 @@ int run_sea_compare_command(const std::string& scenario, const std::string& trac
   cfg.seed = seed;
   cfg.mfbp_params = mfbp_params;
   cfg.progress = !o.no_progress;
+  cfg.classifier = parse_classifier(o.classifier);
   const std::string dir = out_dir.empty() ? "out/compare-" + cfg.scenario.name : out_dir;
   StagedOutputDir staged(dir);
   const auto result = run_sea_compare(cfg);

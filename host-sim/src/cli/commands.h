@@ -38,6 +38,7 @@ struct RunOptions {
   bool no_progress = false;
   bool force = false;                 ///< --force: write even above the output-size limit (input_checks.h)
   double scr_db = kNoScr;             ///< --scr: every target's SCR [dB] (seed 003 sea scenes)
+  std::string classifier = "float";   ///< --classifier float|int8: the sea scenes' CNN g_M
   static constexpr double kNoScr = -1e300;  ///< --scr not given: the scenario's
 };
 
@@ -81,6 +82,7 @@ Subcommand add_replay_command(CLI::App& app);  // cmd_replay.cpp
 // Shared by several commands (cli_common.cpp).
 /// Help text of --mfbp-param (the same on every command that takes it).
 extern const char* const kMfbpParamHelp;
+extern const char* const kClassifierHelp;
 /// Help text of --rfs-param.
 extern const char* const kRfsParamHelp;
 /// "10/3", "20" or "3.5" -> double; throws std::runtime_error naming `flag`.

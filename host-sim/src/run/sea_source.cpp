@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "mptrack/classify/sea_classifier.h"
+#include "mptrack/classify/sea_features_q8.h"
 #include "mptrack/classify/trained_weights.h"
 #include "mptrack/scenario/generator.h"
 #include "mptrack/scenario/rng.h"
@@ -25,7 +26,8 @@ static_assert(kPatchCodes == classify::kPatchSize, "the classifier reads the det
 struct SeaScanSource::Chain {
   Detector detector;
   classify::SeaClassifier classifier;
-  bool features = false;
+  classify::SeaFeaturesQ8 classifier_q8;
+  FeatureExtractor features = FeatureExtractor::kNone;
   std::array<float, kPatchCodes> patch{};
 };
 
@@ -59,7 +61,7 @@ bool is_sea_scenario(const std::string& name) {
   return sea::builtin_sea_scenario(name, s);
 }
 
-SeaScanSource::SeaScanSource(const sea::SeaScenario& scenario, std::uint64_t seed, bool features,
+SeaScanSource::SeaScanSource(const sea::SeaScenario& scenario, std::uint64_t seed, FeatureExtractor features,
                              std::uint32_t map_scan)
     : sea_(scenario), spec_(sea_spec_view(scenario)), seed_(seed), map_scan_(map_scan),
       chain_(std::make_unique<Chain>()) {
@@ -69,12 +71,15 @@ SeaScanSource::SeaScanSource(const sea::SeaScenario& scenario, std::uint64_t see
   if (chain_->detector.init(sea::detector_params_for(sea_)) != Status::kOk) {
     throw std::runtime_error("sea detector: invalid parameters");
   }
-  if (features) {
-    if (!classify::kHaveTrainedWeights || chain_->classifier.init(classify::trained_weights()) != Status::kOk) {
-      throw std::runtime_error("the classifier needs trained weights (./run train-classifier)");
-    }
-    chain_->features = true;
+  if (features == FeatureExtractor::kFloat &&
+      (!classify::kHaveTrainedWeights || chain_->classifier.init(classify::trained_weights()) != Status::kOk)) {
+    throw std::runtime_error("the classifier needs trained weights (./run train-classifier)");
   }
+  if (features == FeatureExtractor::kInt8 &&
+      (!classify::kHaveTrainedQ8Weights || chain_->classifier_q8.init(classify::trained_q8_weights()) != Status::kOk)) {
+    throw std::runtime_error("--classifier int8 needs the quantised weights (./run quantise-classifier)");
+  }
+  chain_->features = features;
 }
 
 SeaScanSource::~SeaScanSource() = default;
@@ -128,7 +133,7 @@ void SeaScanSource::fill_scan(const sea::SeaScan& in, scenario::SimScan& out) {
     out.truth.push_back(ts);
   }
   out.patch_size = kPatchCodes;
-  if (chain_->features) out.feature_size = classify::kNumFeatures;
+  if (chain_->features != FeatureExtractor::kNone) out.feature_size = classify::kNumFeatures;
   const sea::LabelRule rule;
   for (std::size_t j = 0; j < det.num_plots(); ++j) {
     const seaclutter::SeaPlot& p = det.plot(j);
@@ -148,11 +153,16 @@ void SeaScanSource::fill_scan(const sea::SeaScan& in, scenario::SimScan& out) {
     out.measurements.push_back(m);
     const auto& patch = det.patch(p.patch_index);
     out.patches.insert(out.patches.end(), patch.begin(), patch.end());
-    if (!chain_->features) continue;
-    for (std::size_t i = 0; i < kPatchCodes; ++i) chain_->patch[i] = static_cast<float>(patch[i]);
+    if (chain_->features == FeatureExtractor::kNone) continue;
     classify::Features f{};
+    Status st = Status::kOk;
     const auto t0 = std::chrono::steady_clock::now();
-    const Status st = chain_->classifier.features(chain_->patch.data(), f);
+    if (chain_->features == FeatureExtractor::kInt8) {
+      st = chain_->classifier_q8.features(patch.data(), f);
+    } else {
+      for (std::size_t i = 0; i < kPatchCodes; ++i) chain_->patch[i] = static_cast<float>(patch[i]);
+      st = chain_->classifier.features(chain_->patch.data(), f);
+    }
     feature_us_ += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     ++feature_count_;
     if (st != Status::kOk) throw std::runtime_error("classifier features failed");

@@ -38,12 +38,18 @@ struct SeaMapSnapshot {
   std::vector<float> power_db;           ///< [range][Doppler], fftshifted, 10 log10(P)
 };
 
+/// Which CNN g_M computes the classifier features of every plot: none, the
+/// float network or its int8 quantisation (docs/algorithms/nemp.md §int8
+/// inference; `--classifier`).
+enum class FeatureExtractor { kNone, kFloat, kInt8 };
+
 class SeaScanSource final : public ScanSource {
  public:
-  /// `features`: run the classifier's CNN on every plot (needs the trained
-  /// weights; throws std::runtime_error without them). `map_scan`: the scan
-  /// of run 0 whose map is kept (0 = none).
-  SeaScanSource(const sea::SeaScenario& scenario, std::uint64_t seed, bool features, std::uint32_t map_scan);
+  /// `features`: the classifier's CNN run on every plot (needs the trained
+  /// weights of that precision; throws std::runtime_error without them).
+  /// `map_scan`: the scan of run 0 whose map is kept (0 = none).
+  SeaScanSource(const sea::SeaScenario& scenario, std::uint64_t seed, FeatureExtractor features,
+                std::uint32_t map_scan);
   ~SeaScanSource() override;
   const scenario::ScenarioSpec& spec() const override { return spec_; }
   void begin_run(std::uint32_t run) override;

@@ -23,8 +23,6 @@
 
 namespace mptrack::classify {
 
-using Features = std::array<float, kNumFeatures>;
-
 class SeaClassifier {
  public:
   // Map sizes after each block.

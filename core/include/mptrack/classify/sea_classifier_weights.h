@@ -9,6 +9,7 @@
 // is folded into the conv weights and biases at export.
 #pragma once
 
+#include <array>
 #include <cstddef>
 
 namespace mptrack::classify {
@@ -20,6 +21,8 @@ inline constexpr std::size_t kPatchSize = kPatchRange * kPatchDoppler;
 /// Features of g_M (sigmoid outputs) and inputs of g_c (features + belief).
 inline constexpr std::size_t kNumFeatures = 8;
 inline constexpr std::size_t kMlpInputs = kNumFeatures + 1;
+/// The output of g_M: the features h_j of a detection.
+using Features = std::array<float, kNumFeatures>;
 
 /// Layer shapes (output channels, kernel height, kernel width).
 inline constexpr std::size_t kConv1Out = 8, kConv1Kh = 3, kConv1Kw = 7;

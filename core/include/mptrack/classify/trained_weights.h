@@ -6,6 +6,7 @@
 #pragma once
 
 #include "mptrack/classify/sea_classifier_weights.h"
+#include "mptrack/classify/sea_features_q8.h"
 
 #if __has_include("mptrack/classify/generated/sea_classifier_weights.h")
 #include "mptrack/classify/generated/sea_classifier_weights.h"
@@ -13,10 +14,18 @@
 #else
 #define MPTRACK_HAVE_TRAINED_CLASSIFIER 0
 #endif
+#if __has_include("mptrack/classify/generated/sea_features_q8_weights.h")
+#include "mptrack/classify/generated/sea_features_q8_weights.h"
+#define MPTRACK_HAVE_TRAINED_CLASSIFIER_Q8 1
+#else
+#define MPTRACK_HAVE_TRAINED_CLASSIFIER_Q8 0
+#endif
 
 namespace mptrack::classify {
 
 inline constexpr bool kHaveTrainedWeights = MPTRACK_HAVE_TRAINED_CLASSIFIER != 0;
+/// The int8 g_M quantised from the trained set (`./run quantise-classifier`).
+inline constexpr bool kHaveTrainedQ8Weights = MPTRACK_HAVE_TRAINED_CLASSIFIER_Q8 != 0;
 
 inline SeaClassifierWeights trained_weights() {
   SeaClassifierWeights w;
@@ -43,6 +52,25 @@ inline SeaClassifierWeights trained_weights() {
   w.input_scale = g::kInputScale;
   w.input_offset = g::kInputOffset;
   w.train_target_fraction = g::kTrainTargetFraction;
+#endif
+  return w;
+}
+
+/// The int8 g_M of the trained set; incomplete (SeaFeaturesQ8::init()
+/// rejects it) without generated/sea_features_q8_weights.h.
+inline SeaFeaturesQ8Weights trained_q8_weights() {
+  SeaFeaturesQ8Weights w;
+#if MPTRACK_HAVE_TRAINED_CLASSIFIER_Q8
+  namespace g = generated;
+  w.conv1 = {g::kQ8Conv1Weight, g::kQ8Conv1Bias, g::kQ8Conv1Mult, g::kQ8Conv1Shift};
+  w.conv2 = {g::kQ8Conv2Weight, g::kQ8Conv2Bias, g::kQ8Conv2Mult, g::kQ8Conv2Shift};
+  w.conv3 = {g::kQ8Conv3Weight, g::kQ8Conv3Bias, g::kQ8Conv3Mult, g::kQ8Conv3Shift};
+  w.fc1 = {g::kQ8Fc1Weight, g::kQ8Fc1Bias, g::kQ8Fc1Mult, g::kQ8Fc1Shift};
+  w.fc2 = {g::kQ8Fc2Weight, g::kQ8Fc2Bias, g::kQ8Fc2Mult, g::kQ8Fc2Shift};
+  w.fc3_weight = g::kQ8Fc3Weight;
+  w.fc3_bias = g::kQ8Fc3Bias;
+  w.fc3_out_scale = g::kQ8Fc3OutScale;
+  w.input_zero_point = g::kQ8InputZeroPoint;
 #endif
   return w;
 }
