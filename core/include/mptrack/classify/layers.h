@@ -13,22 +13,26 @@
 
 namespace mptrack::classify {
 
-/// out[oc][ho][wo] = max over the Ph x Pw pool window of
-/// ReLU(b[oc] + sum_{ic,kh,kw} w[oc][ic][kh][kw] x[ic][h+kh-Kh/2][w+kw-Kw/2]),
-/// x zero outside [0,H) x [0,W). in: [Cin][H][W], out: [Cout][H/Ph][W/Pw].
-/// The pre-pool map is never stored (RAM: only the pooled output).
+/// The loop nest shared by the float and the int8 convolution (layers_q8.h):
+/// out[oc][ho][wo] = L::store(max(0, max over the Ph x Pw pool window of
+/// L::finish(sum, oc))), the sum starting at L::start(oc) and adding
+/// L::mul(w[oc][ic][kh][kw], x[ic][h+kh-Kh/2][w+kw-Kw/2]) in the order
+/// (ic, kh, kw) over the taps inside the map ("same" padding: zero taps are
+/// skipped). in: [Cin][H][W], out: [Cout][H/Ph][W/Pw]; the pre-pool map is
+/// never stored.
 template <std::size_t Cin, std::size_t H, std::size_t W, std::size_t Cout, std::size_t Kh, std::size_t Kw,
-          std::size_t Ph, std::size_t Pw>
-void conv_relu_pool(const float* in, const float* wgt, const float* bias, float* out) {
+          std::size_t Ph, std::size_t Pw, class L, class In, class Wt, class Out>
+void conv_pool_loops(const In* in, const Wt* wgt, const L& layer, Out* out) {
   static_assert(Kh % 2 == 1 && Kw % 2 == 1, "odd kernels for symmetric same padding");
   static_assert(H % Ph == 0 && W % Pw == 0, "pool windows tile the map");
+  using Acc = typename L::Acc;
   constexpr std::size_t kPadH = Kh / 2, kPadW = Kw / 2;
   constexpr std::size_t kHo = H / Ph, kWo = W / Pw;
   for (std::size_t oc = 0; oc < Cout; ++oc) {
-    const float* w_oc = wgt + oc * Cin * Kh * Kw;
+    const Wt* w_oc = wgt + oc * Cin * Kh * Kw;
     for (std::size_t ho = 0; ho < kHo; ++ho) {
       for (std::size_t wo = 0; wo < kWo; ++wo) {
-        float best = 0.0f;  // ReLU outputs are >= +0, so max starts at +0
+        Acc best = Acc(0);  // ReLU outputs are >= +0, so max starts at +0
         for (std::size_t ph = 0; ph < Ph; ++ph) {
           const std::size_t h = ho * Ph + ph;
           const std::size_t kh0 = h < kPadH ? kPadH - h : 0;
@@ -37,27 +41,48 @@ void conv_relu_pool(const float* in, const float* wgt, const float* bias, float*
             const std::size_t w = wo * Pw + pw;
             const std::size_t kw0 = w < kPadW ? kPadW - w : 0;
             const std::size_t kw1 = w + Kw - kPadW > W ? W + kPadW - w : Kw;
-            float acc = 0.0f;
+            Acc acc = layer.start(oc);
             for (std::size_t ic = 0; ic < Cin; ++ic) {
-              const float* x_ic = in + ic * H * W;
-              const float* w_ic = w_oc + ic * Kh * Kw;
+              const In* x_ic = in + ic * H * W;
+              const Wt* w_ic = w_oc + ic * Kh * Kw;
               for (std::size_t kh = kh0; kh < kh1; ++kh) {
                 // Indexed from the row start: w + kw - kPadW >= 0 for kw >= kw0. A
                 // row pointer offset by (w - kPadW) would point before the array at
                 // the left edge, which is undefined (clang's UBSan reports it).
-                const float* x_row = x_ic + (h + kh - kPadH) * W;
-                const float* w_row = w_ic + kh * Kw;
-                for (std::size_t kw = kw0; kw < kw1; ++kw) acc += w_row[kw] * x_row[w + kw - kPadW];
+                const In* x_row = x_ic + (h + kh - kPadH) * W;
+                const Wt* w_row = w_ic + kh * Kw;
+                for (std::size_t kw = kw0; kw < kw1; ++kw) acc += L::mul(w_row[kw], x_row[w + kw - kPadW]);
               }
             }
-            const float v = acc + bias[oc];
+            const Acc v = layer.finish(acc, oc);
             best = v > best ? v : best;
           }
         }
-        out[(oc * kHo + ho) * kWo + wo] = best;
+        out[(oc * kHo + ho) * kWo + wo] = layer.store(best, oc);
       }
     }
   }
+}
+
+/// The float layer of conv_pool_loops: the sum starts at +0 and the bias is
+/// added last, so with -ffp-contract=off the result has the same bits on
+/// every target.
+struct FloatConvLayer {
+  using Acc = float;
+  const float* bias;
+  static float mul(float w, float x) { return w * x; }
+  static float start(std::size_t /*oc*/) { return 0.0f; }
+  float finish(float acc, std::size_t oc) const { return acc + bias[oc]; }
+  static float store(float best, std::size_t /*oc*/) { return best; }
+};
+
+/// out[oc][ho][wo] = max over the Ph x Pw pool window of
+/// ReLU(b[oc] + sum_{ic,kh,kw} w[oc][ic][kh][kw] x[ic][h+kh-Kh/2][w+kw-Kw/2]),
+/// x zero outside [0,H) x [0,W). in: [Cin][H][W], out: [Cout][H/Ph][W/Pw].
+template <std::size_t Cin, std::size_t H, std::size_t W, std::size_t Cout, std::size_t Kh, std::size_t Kw,
+          std::size_t Ph, std::size_t Pw>
+void conv_relu_pool(const float* in, const float* wgt, const float* bias, float* out) {
+  conv_pool_loops<Cin, H, W, Cout, Kh, Kw, Ph, Pw>(in, wgt, FloatConvLayer{bias}, out);
 }
 
 enum class Activation { kRelu, kSigmoid };

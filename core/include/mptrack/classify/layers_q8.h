@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "mptrack/classify/layers.h"
+
 namespace mptrack::classify {
 
 /// One quantised layer: weights [out][in...] as the float layout, biases
@@ -30,48 +32,28 @@ inline std::uint8_t requantise(std::int32_t acc, std::int32_t mult, std::uint8_t
   return static_cast<std::uint8_t>(y > 255 ? 255 : y);
 }
 
+/// The int8 layer of conv_pool_loops (layers.h): the sum starts at the
+/// bias, ReLU and max-pool act on the accumulator, and only the pooled value
+/// is requantised (all three are monotone, so they commute).
+struct QuantConvLayer {
+  using Acc = std::int32_t;
+  const QuantLayer& l;
+  template <class In>
+  static std::int32_t mul(std::int8_t w, In x) {
+    return static_cast<std::int32_t>(w) * static_cast<std::int32_t>(x);
+  }
+  std::int32_t start(std::size_t oc) const { return l.bias[oc]; }
+  static std::int32_t finish(std::int32_t acc, std::size_t /*oc*/) { return acc; }
+  std::uint8_t store(std::int32_t best, std::size_t oc) const { return requantise(best, l.mult[oc], l.shift[oc]); }
+};
+
 /// out[oc][ho][wo] = requantise(max(0, max over the Ph x Pw pool window of
 /// b[oc] + sum w[oc][ic][kh][kw] x[ic][h+kh-Kh/2][w+kw-Kw/2])), x zero outside
-/// the map (padding taps skipped). ReLU, pool and requantisation commute
-/// (all monotone), so only the pooled accumulator is requantised.
-/// In: int16_t (the centred input codes) or uint8_t (activations).
+/// the map. In: int16_t (the centred input codes) or uint8_t (activations).
 template <std::size_t Cin, std::size_t H, std::size_t W, std::size_t Cout, std::size_t Kh, std::size_t Kw,
           std::size_t Ph, std::size_t Pw, class In>
 void conv_relu_pool_q8(const In* in, const QuantLayer& l, std::uint8_t* out) {
-  static_assert(Kh % 2 == 1 && Kw % 2 == 1, "odd kernels for symmetric same padding");
-  static_assert(H % Ph == 0 && W % Pw == 0, "pool windows tile the map");
-  constexpr std::size_t kPadH = Kh / 2, kPadW = Kw / 2;
-  constexpr std::size_t kHo = H / Ph, kWo = W / Pw;
-  for (std::size_t oc = 0; oc < Cout; ++oc) {
-    const std::int8_t* w_oc = l.weight + oc * Cin * Kh * Kw;
-    for (std::size_t ho = 0; ho < kHo; ++ho) {
-      for (std::size_t wo = 0; wo < kWo; ++wo) {
-        std::int32_t best = 0;  // ReLU: the pooled value is at least 0
-        for (std::size_t ph = 0; ph < Ph; ++ph) {
-          const std::size_t h = ho * Ph + ph;
-          const std::size_t kh0 = h < kPadH ? kPadH - h : 0;
-          const std::size_t kh1 = h + Kh - kPadH > H ? H + kPadH - h : Kh;
-          for (std::size_t pw = 0; pw < Pw; ++pw) {
-            const std::size_t w = wo * Pw + pw;
-            const std::size_t kw0 = w < kPadW ? kPadW - w : 0;
-            const std::size_t kw1 = w + Kw - kPadW > W ? W + kPadW - w : Kw;
-            std::int32_t acc = l.bias[oc];
-            for (std::size_t ic = 0; ic < Cin; ++ic) {
-              for (std::size_t kh = kh0; kh < kh1; ++kh) {
-                const In* x_row = in + (ic * H + h + kh - kPadH) * W;
-                const std::int8_t* w_row = w_oc + (ic * Kh + kh) * Kw;
-                for (std::size_t kw = kw0; kw < kw1; ++kw) {
-                  acc += static_cast<std::int32_t>(w_row[kw]) * static_cast<std::int32_t>(x_row[w + kw - kPadW]);
-                }
-              }
-            }
-            best = acc > best ? acc : best;
-          }
-        }
-        out[(oc * kHo + ho) * kWo + wo] = requantise(best, l.mult[oc], l.shift[oc]);
-      }
-    }
-  }
+  conv_pool_loops<Cin, H, W, Cout, Kh, Kw, Ph, Pw>(in, l.weight, QuantConvLayer{l}, out);
 }
 
 /// acc[o] = b[o] + sum_i w[o][i] x[i], w: [Out][In] (the last layer, whose
@@ -81,7 +63,7 @@ void dense_acc_q8(const std::uint8_t* in, const std::int8_t* wgt, const std::int
   for (std::size_t o = 0; o < Out; ++o) {
     const std::int8_t* w_o = wgt + o * In;
     std::int32_t a = bias[o];
-    for (std::size_t i = 0; i < In; ++i) a += static_cast<std::int32_t>(w_o[i]) * static_cast<std::int32_t>(in[i]);
+    for (std::size_t i = 0; i < In; ++i) a += QuantConvLayer::mul(w_o[i], in[i]);
     acc[o] = a;
   }
 }
