@@ -31,6 +31,8 @@ import re
 
 import numpy as np
 
+from roc import roc_auc  # same directory
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FLOAT_HEADER = ROOT / "core/include/mptrack/classify/generated/sea_classifier_weights.h"
 Q8_HEADER = ROOT / "core/include/mptrack/classify/generated/sea_features_q8_weights.h"
@@ -242,25 +244,6 @@ def write_q8_reference(feats, acc):
 def load(dirname):
     d = {k: np.load(pathlib.Path(dirname) / (k + ".npy")) for k in ("patches", "labels", "scr_db", "belief")}
     return d
-
-
-def roc_auc(scores, labels):
-    """Mann-Whitney AUC with midranks for ties (as train_classifier.py)."""
-    order = np.argsort(scores, kind="mergesort")
-    s = scores[order]
-    ranks = np.empty(len(s))
-    i = 0
-    while i < len(s):
-        j = i
-        while j + 1 < len(s) and s[j + 1] == s[i]:
-            j += 1
-        ranks[i:j + 1] = 0.5 * (i + j) + 1.0
-        i = j + 1
-    r = np.empty(len(s))
-    r[order] = ranks
-    pos = labels == 1
-    n_pos, n_neg = pos.sum(), (~pos).sum()
-    return float((r[pos].sum() - n_pos * (n_pos + 1) / 2.0) / (n_pos * n_neg))
 
 
 def evaluate(fw, q, data, seed, max_clutter):

@@ -29,6 +29,8 @@ import numpy as np
 import torch
 from torch import nn
 
+from roc import roc_auc  # same directory
+
 REF_BELIEFS = (0.2, 0.5, 0.8)
 
 
@@ -93,25 +95,6 @@ def load(dirname):
          ("patches", "labels", "scr_db", "scene", "run", "belief")}
     d["meta"] = json.load(open(os.path.join(dirname, "meta.json")))
     return d
-
-
-def roc_auc(scores, labels):
-    """Mann-Whitney AUC with midranks for ties."""
-    order = np.argsort(scores, kind="mergesort")
-    s = scores[order]
-    ranks = np.empty(len(s))
-    i = 0
-    while i < len(s):
-        j = i
-        while j + 1 < len(s) and s[j + 1] == s[i]:
-            j += 1
-        ranks[i:j + 1] = 0.5 * (i + j) + 1.0
-        i = j + 1
-    r = np.empty(len(s))
-    r[order] = ranks
-    pos = labels == 1
-    n_pos, n_neg = pos.sum(), (~pos).sum()
-    return float((r[pos].sum() - n_pos * (n_pos + 1) / 2.0) / (n_pos * n_neg))
 
 
 def to_input(patches_u8, offset, scale):
