@@ -132,6 +132,95 @@ TEST_CASE("mfbp young track in weaker clutter: confirmed at confirm_threshold_in
   CHECK(mfbp::confirmation_threshold(tracks[2], p) == 0.75);
 }
 
+namespace {
+
+/// One online-filter scan of a young track inside weaker clutter: the
+/// association left visibility evidence xi(1)/xi(0) = ratio, b_s 0.9 (below
+/// 0.99, so only the score can confirm).
+void filter_scan(mfbp::TrackSlot<double, WcCaps>& t, double ratio) {
+  t.from_birth = false;  // a scan after the birth scan: the track takes part in its association
+  t.xi1[0] = ratio / (1.0 + ratio);
+  t.xi0[0] = 1.0 / (1.0 + ratio);
+  t.vis[0] = 0.9;
+}
+
+}  // namespace
+
+TEST_CASE("mfbp online filter in weaker clutter: confirmed when the summed ln(xi1/xi0) reaches 9.21") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  p.window_length = 1;
+  REQUIRE(p.filter_confirm_score_in_clutter == 9.21);
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  TrackerCounters counters{};
+  tracks[0].start(1, 0, 0.5);
+  tracks[0].predictive_evidence = true;
+  // Evidence 20:1 per scan: ln 20 = 2.996, so 8.99 after three scans (not yet)
+  // and 11.98 after four.
+  for (int scan = 1; scan <= 3; ++scan) {
+    filter_scan(tracks[0], 20.0);
+    mfbp::confirm_tracks(tracks, 1, p, counters);
+    CHECK_FALSE(tracks[0].confirmed);
+  }
+  CHECK(tracks[0].score == doctest::Approx(3.0 * std::log(20.0)).epsilon(1e-9));
+  filter_scan(tracks[0], 20.0);
+  mfbp::confirm_tracks(tracks, 1, p, counters);
+  CHECK(tracks[0].confirmed);
+  CHECK(counters.tracks_confirmed == 1u);
+}
+
+TEST_CASE("mfbp online filter in weaker clutter: a scan against the track lowers its score") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  p.window_length = 1;
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  TrackerCounters counters{};
+  tracks[0].start(1, 0, 0.5);
+  tracks[0].predictive_evidence = true;
+  const double ratios[] = {20.0, 0.25, 20.0, 20.0};  // ln: 3.00 - 1.39 + 3.00 + 3.00 = 7.60
+  for (double r : ratios) {
+    filter_scan(tracks[0], r);
+    mfbp::confirm_tracks(tracks, 1, p, counters);
+  }
+  CHECK(tracks[0].score == doctest::Approx(3.0 * std::log(20.0) + std::log(0.25)).epsilon(1e-9));
+  CHECK_FALSE(tracks[0].confirmed);
+}
+
+TEST_CASE("mfbp score confirmation: not in the smoother, not for plain tracks, not when off") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  TrackerCounters counters{};
+  tracks[0].start(1, 0, 0.5);  // smoother (window 7), young track in clutter
+  tracks[0].predictive_evidence = true;
+  MfbpParams<double> filter = p;
+  filter.window_length = 1;
+  tracks[1].start(2, 0, 0.5);  // filter, plain track: confirm_threshold 0.75 decides
+  MfbpParams<double> off = filter;
+  off.filter_confirm_score_in_clutter = 0.0;
+  tracks[2].start(3, 0, 0.5);  // filter, in clutter, rule off
+  tracks[2].predictive_evidence = true;
+  for (int scan = 0; scan < 10; ++scan) {
+    for (auto& t : tracks) {
+      filter_scan(t, 20.0);
+      t.vis[0] = 0.7;  // below 0.75: b_s confirms none of them
+    }
+    mfbp::confirm_tracks(tracks, 1, p, counters);
+    CHECK(mfbp::filter_score_confirms(tracks[1], 1, filter) == false);
+    CHECK(mfbp::filter_score_confirms(tracks[2], 1, off) == false);
+  }
+  CHECK_FALSE(tracks[0].confirmed);
+  CHECK(tracks[0].score == 0.0);
+  CHECK(tracks[1].score == 0.0);
+  CHECK(tracks[2].score == 0.0);
+}
+
+TEST_CASE("mfbp params: filter_confirm_score_in_clutter must lie in [0, 100] nats") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  CHECK(p.validate() == mptrack::Status::kOk);
+  p.filter_confirm_score_in_clutter = -1.0;
+  CHECK(p.validate() != mptrack::Status::kOk);
+  p.filter_confirm_score_in_clutter = 101.0;
+  CHECK(p.validate() != mptrack::Status::kOk);
+}
+
 TEST_CASE("mfbp young track in weaker clutter: dropped after tentative_timeout_in_clutter_scans, not 6") {
   MfbpParams<double> p = seed000_default_params<double>();
   REQUIRE(p.tentative_timeout_scans == 6u);

@@ -42,6 +42,7 @@ const Real kReals[] = {
     {"noise.doppler_std_mps", [](P& p) -> double& { return p.noise.doppler_std_mps; }},
     {"amplitude.threshold", [](P& p) -> double& { return p.amplitude.threshold; }},
     {"confirm_threshold_in_clutter", [](P& p) -> double& { return p.confirm_threshold_in_clutter; }},
+    {"filter_confirm_score_in_clutter", [](P& p) -> double& { return p.filter_confirm_score_in_clutter; }},
 };
 const Count kCounts[] = {
     {"delete_run", [](P& p) -> std::size_t& { return p.delete_run; }},

@@ -254,6 +254,11 @@ struct MfbpParams {
   T confirm_threshold_in_clutter = T(0.99);  ///< Ours. confirm_threshold of a tentative track
                                       ///< whose smoothed position on the scan lies in such a
                                       ///< component (with tentative_predictive_in_clutter) [-]
+  T filter_confirm_score_in_clutter = T(9.21);  ///< Ours. Online filter (window_length 1) only:
+                                      ///< such a track is also confirmed once its score, the sum
+                                      ///< of ln(xi(1)/xi(0)) over its scans, reaches this
+                                      ///< (9.21 = logit 0.9999; docs/algorithms/mfbp.md §Birth);
+                                      ///< 0 = off [nats]
   T delete_threshold = T(0.5);        ///< delete after delete_run scans with b_s(1) below [-]
   std::size_t delete_run = 5;         ///< consecutive low-visibility scans before deletion. Ours:
                                       ///< the paper deletes after L_max = 3, but with p_s = 0.8
@@ -419,6 +424,8 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "confirm_threshold", check_open_probability(confirm_threshold));
   MPTRACK_CHECK_PARAM(w, "confirm_threshold_in_clutter",
                       check_open_probability(confirm_threshold_in_clutter));
+  MPTRACK_CHECK_PARAM(w, "filter_confirm_score_in_clutter",
+                      check_range(filter_confirm_score_in_clutter, T(0), T(100)));
   MPTRACK_CHECK_PARAM(w, "delete_threshold", check_open_probability(delete_threshold));
   MPTRACK_CHECK_PARAM(w, "delete_run", check_at_least(delete_run, 1));
   MPTRACK_CHECK_PARAM(w, "tentative_timeout_scans", check_at_least(tentative_timeout_scans, 1));

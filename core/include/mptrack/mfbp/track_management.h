@@ -2,7 +2,9 @@
 // (seed 000 Section III.G; docs/algorithms/mfbp.md §Confirmation and
 // reporting):
 //   * a tentative track is confirmed once its visibility b_s (eq. (64))
-//     reaches confirm_threshold on a window scan;
+//     reaches confirm_threshold on a window scan (confirmation_threshold: a
+//     young track inside weaker clutter needs confirm_threshold_in_clutter,
+//     or in the online filter the score of filter_score_confirms);
 //   * a track is deleted when b_s < delete_threshold on delete_run
 //     consecutive scans (finalised history + the window tail), or when it
 //     stays tentative for tentative_timeout_scans finalised scans; a
@@ -16,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "mptrack/math/detmath.h"
 #include "mptrack/mfbp/clutter_slot.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/model_constants.h"
@@ -55,11 +58,34 @@ std::size_t tentative_timeout(const TrackSlot<T, Caps>& t, const MfbpParams<T>& 
              : p.tentative_timeout_scans;
 }
 
+/// Online filter (window_length 1) only (docs/algorithms/mfbp.md §Birth, the
+/// online filter inside clutter): adds the scan's visibility evidence
+/// ln(xi(1)/xi(0)) to the score of a track held to confirm_threshold_in_clutter
+/// and says whether the score reaches filter_confirm_score_in_clutter. A
+/// filtered b_s is capped by one scan's evidence: at most p_s xi1 / (p_s xi1 +
+/// (1 - p_s) xi0), so with p_s = 0.8 it reaches 0.99 only on a scan with
+/// xi1/xi0 >= 24.75, which a young track inside a component rarely sees. The
+/// score keeps every scan's evidence: a sequential likelihood-ratio test.
+template <class T, class Caps>
+bool filter_score_confirms(TrackSlot<T, Caps>& t, std::size_t n, const MfbpParams<T>& p) {
+  if (p.window_length != 1 || n != 1 || !(p.filter_confirm_score_in_clutter > T(0)) ||
+      !(confirmation_threshold(t, p) > p.confirm_threshold)) {
+    return false;
+  }
+  if (t.participates(0) && t.xi1[0] > T(0) && t.xi0[0] > T(0)) t.score += dmath::dlog(t.xi1[0] / t.xi0[0]);
+  return t.score >= p.filter_confirm_score_in_clutter;
+}
+
 template <class T, class Caps>
 void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams<T>& p,
                     TrackerCounters& counters) {
   for (auto& t : tracks) {
     if (!t.alive || t.confirmed) continue;
+    if (filter_score_confirms(t, n, p)) {
+      t.confirmed = true;
+      ++counters.tracks_confirmed;
+      continue;
+    }
     for (std::size_t k = t.first; k < n; ++k) {
       if (t.vis[k] >= confirmation_threshold(t, p)) {
         t.confirmed = true;

@@ -44,6 +44,10 @@ struct TrackSlot {
   /// weaker clutter, weaker_clutter.h) on some scan while tentative: it is
   /// confirmed at confirm_threshold_in_clutter (docs/algorithms/mfbp.md §Birth).
   bool predictive_evidence = false;
+  /// Online filter: sum of ln(xi(1)/xi(0)) over the scans the track took
+  /// part in while it had to reach confirm_threshold_in_clutter
+  /// (filter_score_confirms, track_management.h) [nats].
+  T score = T(0);
   // prior: filtered at the scan before the window (or birth state)
   Vec4 x0 = Vec4::Zero();
   Mat4 P0 = Mat4::Identity();
@@ -140,6 +144,7 @@ struct TrackSlot {
     low_run = 0;
     age = 0;
     predictive_evidence = false;
+    score = T(0);
     x0 = Vec4::Zero();
     P0 = Mat4::Identity();
     ig0 = IG{};
