@@ -277,3 +277,54 @@ TEST_CASE("mfbp known map: an interval that ends before it starts is refused, na
   p.known_clutter.components[0].active_until_us = 5;  // one scan: valid
   CHECK(p.validate(&e) == Status::kOk);
 }
+
+TEST_CASE("mfbp any component: its gate holds a point whatever the component's power") {
+  const MfbpParams<double> p = known_map_params();
+  const mfbp::ClutterTable<double, WcCaps> cl{};
+  // The centre of the CNR 4 component: not weaker than an SNR 3 target, yet inside.
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 4.0, 0, 0u, cl, p));
+  CHECK(mfbp::inside_any_component(30000.0, kAz0, 0, 0u, cl, p));
+  // Same gate as the weaker test: d^2 = 25 inside, 31.36 outside (clutter_gate_chi2 30).
+  CHECK(mfbp::inside_any_component(30000.0 + 5.0 * 2500.0, kAz0, 0, 0u, cl, p));
+  CHECK_FALSE(mfbp::inside_any_component(30000.0 + 5.6 * 2500.0, kAz0, 0, 0u, cl, p));
+}
+
+TEST_CASE("mfbp any component: the rule holds tentative tracks of the online filter only") {
+  MfbpParams<double> filter = seed000_default_params<double>();
+  filter.window_length = 1;
+  REQUIRE(filter.filter_score_in_any_component);
+  mfbp::TrackSlot<double, WcCaps> t{};
+  t.start(1, 0, 0.5);
+  CHECK(mfbp::filter_holds_in_any_component(t, filter));
+  MfbpParams<double> smoother = filter;
+  smoother.window_length = 7;
+  CHECK_FALSE(mfbp::filter_holds_in_any_component(t, smoother));
+  MfbpParams<double> off = filter;
+  off.filter_score_in_any_component = false;
+  CHECK_FALSE(mfbp::filter_holds_in_any_component(t, off));
+  MfbpParams<double> no_score = filter;
+  no_score.filter_confirm_score_in_clutter = 0.0;  // without the score it would never confirm
+  CHECK_FALSE(mfbp::filter_holds_in_any_component(t, no_score));
+  t.confirmed = true;
+  CHECK_FALSE(mfbp::filter_holds_in_any_component(t, filter));
+}
+
+TEST_CASE("mfbp any component: a filter track predicted in a component needs the score, not b_s 0.75") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  p.window_length = 1;
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  TrackerCounters counters{};
+  tracks[0].start(1, 0, 0.5);  // plain
+  tracks[1].start(2, 0, 0.5);  // predicted inside a component
+  tracks[1].predicted_in_component = true;
+  CHECK(mfbp::confirmation_threshold(tracks[1], p) == 0.99);
+  // Two scans at 4:1 (b_s 0.9 each): the plain track is confirmed at once; the
+  // other's score is 2 ln 4 = 2.77 < 9.21.
+  for (int scan = 0; scan < 2; ++scan) {
+    for (auto& t : tracks) filter_scan(t, 4.0);
+    mfbp::confirm_tracks(tracks, 1, p, counters);
+  }
+  CHECK(tracks[0].confirmed);
+  CHECK_FALSE(tracks[1].confirmed);
+  CHECK(tracks[1].score == doctest::Approx(2.0 * std::log(4.0)).epsilon(1e-9));
+}

@@ -57,6 +57,7 @@ const Count kCounts[] = {
     {"delete_run_in_clutter", [](P& p) -> std::size_t& { return p.delete_run_in_clutter; }},
 };
 const Flag kFlags[] = {
+    {"filter_score_in_any_component", [](P& p) -> bool& { return p.filter_score_in_any_component; }},
     {"unresolved_pooling", [](P& p) -> bool& { return p.unresolved_pooling; }},
     {"unresolved_taper", [](P& p) -> bool& { return p.unresolved_taper; }},
     {"association_cavity", [](P& p) -> bool& { return p.association_cavity; }},

@@ -142,6 +142,12 @@ class Associator {
       mo.ok = track_moments(t, k, s, p, mc, counters, mo);
       mo.predictive = mo.ok && p.tentative_predictive_in_clutter && !t.confirmed &&
                       inside_weaker_component(mo.z(0), mo.z(1), t.igs[k].mean(), k, s.time_us, cl, p);
+      // Online filter: young tracks in any component confirm by the score
+      // (docs/algorithms/mfbp.md §Birth).
+      if (mo.ok && filter_holds_in_any_component(t, p) &&
+          inside_any_component(mo.z(0), mo.z(1), k, s.time_us, cl, p)) {
+        t.predicted_in_component = true;
+      }
     }
     if (p.tentative_predictive_in_clutter) mark_predictive(tracks, mc, p);
     if (p.unresolved_chi2 > T(0)) {

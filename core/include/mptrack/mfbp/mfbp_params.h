@@ -259,6 +259,14 @@ struct MfbpParams {
                                       ///< of ln(xi(1)/xi(0)) over its scans, reaches this
                                       ///< (9.21 = logit 0.9999; docs/algorithms/mfbp.md §Birth);
                                       ///< 0 = off [nats]
+  bool filter_score_in_any_component = true;  ///< Ours. Online filter (window_length 1) only: a
+                                      ///< tentative track whose predicted measurement lies in the
+                                      ///< gate of any Gaussian clutter component, weaker or not,
+                                      ///< is held to confirm_threshold_in_clutter and so to the
+                                      ///< score test above, not only one in weaker clutter: a
+                                      ///< filter confirms a clutter-born track on two lucky
+                                      ///< scans at confirm_threshold (docs/algorithms/mfbp.md
+                                      ///< §Birth). false = weaker components only
   T delete_threshold = T(0.5);        ///< delete after delete_run scans with b_s(1) below [-]
   std::size_t delete_run = 5;         ///< consecutive low-visibility scans before deletion. Ours:
                                       ///< the paper deletes after L_max = 3, but with p_s = 0.8

@@ -44,6 +44,10 @@ struct TrackSlot {
   /// weaker clutter, weaker_clutter.h) on some scan while tentative: it is
   /// confirmed at confirm_threshold_in_clutter (docs/algorithms/mfbp.md §Birth).
   bool predictive_evidence = false;
+  /// Online filter: its predicted measurement lay in the gate of a Gaussian
+  /// clutter component, of any power, on some scan while tentative
+  /// (filter_score_in_any_component): it is held to confirm_threshold_in_clutter.
+  bool predicted_in_component = false;
   /// Online filter: sum of ln(xi(1)/xi(0)) over the scans the track took
   /// part in while it had to reach confirm_threshold_in_clutter
   /// (filter_score_confirms, track_management.h) [nats].
@@ -144,6 +148,7 @@ struct TrackSlot {
     low_run = 0;
     age = 0;
     predictive_evidence = false;
+    predicted_in_component = false;
     score = T(0);
     x0 = Vec4::Zero();
     P0 = Mat4::Identity();

@@ -14,10 +14,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "mptrack/mfbp/clutter_slot.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/model_constants.h"
+#include "mptrack/mfbp/track_slot.h"
 #include "mptrack/model/mahalanobis.h"
 #include "mptrack/model/polar_measurement.h"
 
@@ -57,6 +59,22 @@ bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, std::uint64
   };
   for_each_gaussian_component(k, time_us, cl, p, consider);
   return inside;
+}
+
+/// Inside the gate of a Gaussian clutter component of any power (a target
+/// of infinite power: every component is weaker).
+template <class T, class Caps>
+bool inside_any_component(T r, T az, std::size_t k, std::uint64_t time_us, const ClutterTable<T, Caps>& cl,
+                          const MfbpParams<T>& p) {
+  return inside_weaker_component(r, az, std::numeric_limits<T>::infinity(), k, time_us, cl, p);
+}
+
+/// Does the online-filter rule filter_score_in_any_component apply to
+/// track t (tentative, window of one scan, rule and score test on)?
+template <class T, class Caps>
+bool filter_holds_in_any_component(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
+  return p.filter_score_in_any_component && p.window_length == 1 && p.tentative_predictive_in_clutter &&
+         p.filter_confirm_score_in_clutter > T(0) && !t.confirmed;
 }
 
 }  // namespace mptrack::mfbp
