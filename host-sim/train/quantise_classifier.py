@@ -159,6 +159,21 @@ def quantise(fw, act_max):
     return q
 
 
+def check_accumulator_bounds(q):
+    """The core sums in int32 (layers_q8.h): assert that no layer's accumulator
+    can leave it for any input, |b| + sum |w| * max|x| < 2^31 per output (every
+    tap counted, so padding only lowers it), the first layer's input being the
+    centred code c - z of a uint8 c and the others uint8 activations."""
+    z = q["input_zero_point"]
+    x_max = max(z, 255 - z)
+    for name, _, _ in LAYERS:
+        layer = q[name]
+        w_abs = np.abs(layer["weight"].reshape(len(layer["weight"]), -1)).sum(axis=1)
+        worst = int((np.abs(layer["bias"]) + w_abs * x_max).max())
+        assert worst < (1 << 31), f"{name}: worst-case accumulator {worst} does not fit int32"
+        x_max = 255
+
+
 def requantise(acc, layer, axis_shape):
     m = layer["mult"].reshape(axis_shape)
     s = layer["shift"].reshape(axis_shape)
@@ -289,6 +304,7 @@ def main():
     outs = batched(lambda c: float_layers(fw, c), cal["patches"][pick])
     act_max = [float(o.max()) for o in outs]
     q = quantise(fw, act_max)
+    check_accumulator_bounds(q)
     info = (f"{len(pick)} seed003-sea-a patches ({n_pos} target), per-layer max "
             + " / ".join(f"{v:.3g}" for v in act_max[:-1]))
     write_q8_header(q, info)

@@ -289,6 +289,28 @@ TEST_CASE("mfbp any component: its gate holds a point whatever the component's p
   CHECK_FALSE(mfbp::inside_any_component(30000.0 + 5.6 * 2500.0, kAz0, 0, 0u, cl, p));
 }
 
+TEST_CASE("mfbp any component: a gate test alone, so also without amplitude (KI)") {
+  MfbpParams<double> p = known_map_params();
+  p.amplitude.use_amplitude = false;
+  const mfbp::ClutterTable<double, WcCaps> cl{};
+  CHECK_FALSE(mfbp::inside_weaker_component(30000.0, kAz0, 11.0, 0, 0u, cl, p));
+  CHECK(mfbp::inside_any_component(30000.0, kAz0, 0, 0u, cl, p));
+  p.known_clutter.components[0].rate_per_scan = 0.0;  // a component that produces nothing
+  CHECK_FALSE(mfbp::inside_any_component(30000.0, kAz0, 0, 0u, cl, p));
+}
+
+TEST_CASE("mfbp any component: a reused slot starts without the flag and with score 0") {
+  mfbp::TrackSlot<double, WcCaps> t{};
+  t.start(1, 0, 0.5);
+  t.predicted_in_component = true;
+  t.predictive_evidence = true;
+  t.score = 7.5;
+  t.start(2, 0, 0.5);  // the slot taken by a new track
+  CHECK_FALSE(t.predicted_in_component);
+  CHECK_FALSE(t.predictive_evidence);
+  CHECK(t.score == 0.0);
+}
+
 TEST_CASE("mfbp any component: the rule holds tentative tracks of the online filter only") {
   MfbpParams<double> filter = seed000_default_params<double>();
   filter.window_length = 1;

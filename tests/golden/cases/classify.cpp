@@ -32,7 +32,7 @@ void add_q8_features(GoldenSink& g) {
   g.require(q.init(cl::trained_q8_weights()) == Status::kOk, "int8 features init");
   for (std::size_t p = 0; p < classify_ref::kNumPatches; ++p) {
     std::array<std::int32_t, cl::kNumFeatures> acc{};
-    q.logits(classify_ref::kPatches[p], acc);
+    g.require(q.logits(classify_ref::kPatches[p], acc) == Status::kOk, "int8 logits");
     cl::Features f{};
     g.require(q.features(classify_ref::kPatches[p], f) == Status::kOk, "int8 features");
     const Label s = Label("q8.p") + p;

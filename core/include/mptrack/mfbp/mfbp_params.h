@@ -284,7 +284,9 @@ struct MfbpParams {
                                             ///< §Confirmation and reporting)
   std::size_t tentative_timeout_in_clutter_scans = 10;  ///< Ours. The same for a young track
                                             ///< that must reach confirm_threshold_in_clutter
-                                            ///< (predictive_evidence); at or below
+                                            ///< (confirmation_threshold, track_management.h:
+                                            ///< predictive_evidence, or in the online filter
+                                            ///< predicted_in_component); at or below
                                             ///< tentative_timeout_scans: off (docs/algorithms/
                                             ///< mfbp.md §Birth)
   T duplicate_chi2 = T(0);            ///< Ours. Two live tracks, at least one confirmed, whose

@@ -34,10 +34,10 @@ namespace mptrack::mfbp {
 /// tracks inside weaker clutter): confirm_threshold_in_clutter once it has
 /// scored measurements with the predictive density (predictive_evidence) or,
 /// in the online filter, been predicted inside any Gaussian component
-/// (predicted_in_component), confirm_threshold otherwise. The predictive density lets a loose young
-/// track take a clutter point near its prediction at fair odds, so one or
-/// two lucky scans would confirm it at 0.75; a target keeps b_s near 1 scan
-/// after scan as the track tightens, clutter does not.
+/// (predicted_in_component), confirm_threshold otherwise. The predictive
+/// density lets a loose young track take a clutter point near its prediction
+/// at fair odds, so one or two lucky scans would confirm it at 0.75; a target
+/// keeps b_s near 1 scan after scan as the track tightens, clutter does not.
 template <class T, class Caps>
 T confirmation_threshold(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
   return p.tentative_predictive_in_clutter && (t.predictive_evidence || t.predicted_in_component) &&

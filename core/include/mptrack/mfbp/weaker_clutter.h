@@ -14,7 +14,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 
 #include "mptrack/mfbp/clutter_slot.h"
 #include "mptrack/mfbp/mfbp_params.h"
@@ -46,13 +45,14 @@ void for_each_gaussian_component(std::size_t k, std::uint64_t time_us, const Clu
   }
 }
 
-template <class T, class Caps>
-bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, std::uint64_t time_us,
-                             const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p) {
-  if (!p.amplitude.use_amplitude) return false;
+/// Is (r, az) in the gate (clutter_gate_chi2 under E[D^-1]) of a Gaussian
+/// component whose mean total power E[1 + CNR] passes accept(power)?
+template <class T, class Caps, class Accept>
+bool inside_component_gate(T r, T az, std::size_t k, std::uint64_t time_us, const ClutterTable<T, Caps>& cl,
+                           const MfbpParams<T>& p, Accept&& accept) {
   bool inside = false;
   const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T varsigma_c) {
-    if (inside || !(varsigma_c < varsigma_t)) return;
+    if (inside || !accept(varsigma_c)) return;
     const model::Mahalanobis2<T> gate(cov);
     if (!gate.valid()) return;
     inside = !(gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > p.clutter_gate_chi2);
@@ -61,12 +61,19 @@ bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, std::uint64
   return inside;
 }
 
-/// Inside the gate of a Gaussian clutter component of any power (a target
-/// of infinite power: every component is weaker).
+template <class T, class Caps>
+bool inside_weaker_component(T r, T az, T varsigma_t, std::size_t k, std::uint64_t time_us,
+                             const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p) {
+  if (!p.amplitude.use_amplitude) return false;
+  return inside_component_gate(r, az, k, time_us, cl, p, [varsigma_t](T varsigma_c) { return varsigma_c < varsigma_t; });
+}
+
+/// Inside the gate of a Gaussian clutter component of any power; a pure
+/// gate test, so also without amplitude (KI ablation).
 template <class T, class Caps>
 bool inside_any_component(T r, T az, std::size_t k, std::uint64_t time_us, const ClutterTable<T, Caps>& cl,
                           const MfbpParams<T>& p) {
-  return inside_weaker_component(r, az, std::numeric_limits<T>::infinity(), k, time_us, cl, p);
+  return inside_component_gate(r, az, k, time_us, cl, p, [](T /*varsigma_c*/) { return true; });
 }
 
 /// Does the online-filter rule filter_score_in_any_component apply to
