@@ -41,6 +41,11 @@ struct ClutterOut {
 /// Everything a tracker finalised for one scan.
 struct EstimateOut {
   std::uint32_t scan = 0;  ///< 1-based scan number (tracker scan_index + 1)
+  /// The source scan whose step() handed this estimate out (the last one
+  /// delivered for flush()'s): `scan` for a filter, later by the output lag
+  /// for a smoother. Set by the run loop (run_tracker); 0 = not recorded,
+  /// read as `scan`.
+  std::uint32_t reported_after_scan = 0;
   std::vector<TrackOut> tracks;
   std::vector<ClutterOut> clutter;
 };

@@ -315,7 +315,45 @@ class TruncatingTracker final : public TrackerAdapter {
   TrackerCounters c_{};
 };
 
+/// A smoother of lag 2: step n hands out the estimate of step n - 2, and
+/// flush() the last two.
+class LaggingTracker final : public TrackerAdapter {
+ public:
+  std::string init(const TrackerSetup&) override { return ""; }
+  Status step(const sc::SimScan&, std::vector<EstimateOut>& out) override {
+    ++n_;
+    if (n_ > 2) emit(n_ - 2, out);
+    return Status::kOk;
+  }
+  Status flush(std::vector<EstimateOut>& out) override {
+    for (std::uint32_t k = n_ > 2 ? n_ - 1 : 1; k <= n_; ++k) emit(k, out);
+    return Status::kOk;
+  }
+  TrackerCounters counters() const override { return {}; }
+
+ private:
+  static void emit(std::uint32_t step, std::vector<EstimateOut>& out) {
+    out.emplace_back();
+    out.back().scan = step;
+  }
+  std::uint32_t n_ = 0;
+};
+
 }  // namespace
+
+TEST_CASE("sim run loop: each estimate records the scan after whose step() it was handed out") {
+  sc::ScenarioSpec spec;
+  REQUIRE(sc::builtin_scenario("seed000-s2", spec));
+  truncate_scans(spec, 5);
+  MeasurementSource source(spec, 1, 1.0);
+  source.begin_run(0);
+  LaggingTracker lag;
+  const RunRecord rec = run_tracker(source, lag, 0, nullptr);
+  REQUIRE(rec.by_scan.size() == 5);
+  // Scans 1..3 after steps 3..5; scans 4 and 5 by flush(), after scan 5.
+  const std::uint32_t expected[5] = {3, 4, 5, 5, 5};
+  for (std::uint32_t k = 1; k <= 5; ++k) CHECK(rec.by_scan[k - 1].reported_after_scan == expected[k - 1]);
+}
 
 TEST_CASE("sim run loop: steps whose mixture truncation grew are counted once each, flush included") {
   sc::ScenarioSpec spec;

@@ -416,3 +416,28 @@ TEST_CASE("track scoring: the scenario's Gaussian component gives one region per
   CHECK(inside_clutter_region(p.clutter_regions[0], 0.0, 30000.0 + 2.4 * 2500.0));
   CHECK_FALSE(inside_clutter_region(p.clutter_regions[0], 0.0, 30000.0 + 2.5 * 2500.0));
 }
+
+TEST_CASE("track scoring: the report delay adds the lag of the estimate that first covered the target") {
+  // Target alive 1..8, covered from scan 3: TTL 2. Each scan's estimate was
+  // handed out 4 scans later (a smoother's lag), the last ones by flush()
+  // after scan 8: scan 3's after scan 7, so the report delay is 7 - 1 = 6.
+  Run r(8);
+  for (std::uint32_t k = 1; k <= 8; ++k) r.target(k, 1, 1000.0, 0.0);
+  for (std::uint32_t k = 3; k <= 8; ++k) r.track(k, 7, 1001.0, 0.0);
+  for (std::uint32_t k = 1; k <= 8; ++k) r.est[k - 1].reported_after_scan = k + 4 < 8 ? k + 4 : 8;
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(50.0)));
+  CHECK(t.ttl_scans() == doctest::Approx(2.0));
+  CHECK(t.report_delay_scans() == doctest::Approx(6.0));
+  CHECK(t.report_delay_scans_of(1) == doctest::Approx(6.0));
+}
+
+TEST_CASE("track scoring: an estimate without a recorded report scan counts as reported at its own scan") {
+  Run r(4);
+  for (std::uint32_t k = 1; k <= 4; ++k) r.target(k, 1, 1000.0, 0.0);
+  for (std::uint32_t k = 2; k <= 4; ++k) r.track(k, 7, 1001.0, 0.0);
+  TrackScoreTotals t;  // reported_after_scan left 0, as a replay or a hand-built run leaves it
+  t.add(score_run(r.scans, r.est, gate(50.0)));
+  CHECK(t.report_delay_scans() == doctest::Approx(t.ttl_scans()));
+  CHECK(t.report_delay_scans() == doctest::Approx(1.0));
+}

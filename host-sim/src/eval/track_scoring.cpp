@@ -134,7 +134,9 @@ struct TargetFollower {
   std::uint32_t last_track = 0;
   bool has_last = false, covered_last_scan = false;
 
-  void scan(std::uint32_t k, const scenario::TruthState& truth, const TrackOut* track, const ScanAssignment& now) {
+  /// reported_after: the scan after which scan k's estimate was handed out.
+  void scan(std::uint32_t k, std::uint32_t reported_after, const scenario::TruthState& truth, const TrackOut* track,
+            const ScanAssignment& now) {
     ++score.alive_scans;
     const bool settled = k >= score.birth_scan + kSettleScans;
     if (settled) ++score.settled_scans;
@@ -145,6 +147,8 @@ struct TargetFollower {
     ++score.covered_scans;
     if (settled) ++score.settled_covered_scans;
     if (score.first_covered_scan < 0) score.first_covered_scan = static_cast<std::int32_t>(k);
+    const auto reported = static_cast<std::int32_t>(reported_after);
+    if (score.first_reported_scan < 0 || reported < score.first_reported_scan) score.first_reported_scan = reported;
     if (has_last && track->id != last_track) {
       ++score.id_switches;
       if (now.count(last_track) == 0) ++score.track_breaks;
@@ -248,7 +252,8 @@ RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::
           covering = &t;
         }
       }
-      followers[index[truth.target_id]].scan(k, truth, covering, per_scan[i]);
+      const std::uint32_t reported_after = by_scan[i].reported_after_scan > 0 ? by_scan[i].reported_after_scan : k;
+      followers[index[truth.target_id]].scan(k, reported_after, truth, covering, per_scan[i]);
     }
   }
   for (const TargetFollower& f : followers) run.targets.push_back(f.score);
@@ -271,10 +276,13 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
     TargetDelay& delay = delay_by_target[t.target_id];
     if (t.first_covered_scan >= 0) {
       const std::uint64_t latency = static_cast<std::uint64_t>(t.first_covered_scan) - t.birth_scan;
+      const std::uint64_t reported = static_cast<std::uint64_t>(t.first_reported_scan) - t.birth_scan;
       ++targets_tracked;
       latency_scans += latency;
+      report_latency_scans += reported;
       ++delay.tracked;
       delay.latency_scans += latency;
+      delay.report_latency_scans += reported;
     } else {
       ++delay.never_tracked;
     }
@@ -309,6 +317,9 @@ double TrackScoreTotals::nft_in_clutter() const {
 }
 double TrackScoreTotals::tpd() const { return ratio(static_cast<double>(covered_scans), alive_scans); }
 double TrackScoreTotals::ttl_scans() const { return ratio(static_cast<double>(latency_scans), targets_tracked); }
+double TrackScoreTotals::report_delay_scans() const {
+  return ratio(static_cast<double>(report_latency_scans), targets_tracked);
+}
 double TrackScoreTotals::aee_range_m() const { return ratio(abs_range_err_sum_m, covered_scans); }
 double TrackScoreTotals::aee_bearing_rad() const { return ratio(abs_bearing_err_sum_rad, covered_scans); }
 double TrackScoreTotals::per_target(std::uint64_t count) const { return ratio(static_cast<double>(count), targets); }
@@ -326,6 +337,11 @@ double TrackScoreTotals::settled_coverage() const {
 double TrackScoreTotals::ttl_scans_of(std::uint32_t target_id) const {
   const auto it = delay_by_target.find(target_id);
   return it == delay_by_target.end() ? 0.0 : ratio(static_cast<double>(it->second.latency_scans), it->second.tracked);
+}
+double TrackScoreTotals::report_delay_scans_of(std::uint32_t target_id) const {
+  const auto it = delay_by_target.find(target_id);
+  return it == delay_by_target.end() ? 0.0
+                                     : ratio(static_cast<double>(it->second.report_latency_scans), it->second.tracked);
 }
 double TrackScoreTotals::settled_coverage_of(std::uint32_t target_id) const {
   const auto it = settled_by_target.find(target_id);

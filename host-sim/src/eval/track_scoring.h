@@ -68,6 +68,9 @@ struct TargetScore {
   std::uint32_t alive_scans = 0;
   std::uint32_t covered_scans = 0;   ///< scans a scored (non-false) track was assigned to it
   std::int32_t first_covered_scan = -1;  ///< -1: never tracked
+  /// The scan after which the tracker first handed out a covering track
+  /// (EstimateOut::reported_after_scan of the covered scans, earliest); -1: never.
+  std::int32_t first_reported_scan = -1;
   std::uint32_t id_switches = 0;     ///< its assigned track id changed (from the last one it had)
   std::uint32_t fragmentations = 0;  ///< coverage resumed after an interruption
   std::uint32_t track_breaks = 0;    ///< id changed and the previous track no longer existed
@@ -123,6 +126,7 @@ struct TrackScoreTotals {
   std::uint64_t targets = 0, targets_tracked = 0;  ///< (run, target) pairs, and those ever covered
   std::uint64_t alive_scans = 0, covered_scans = 0;
   std::uint64_t latency_scans = 0;                 ///< sum of first_covered - birth over tracked targets
+  std::uint64_t report_latency_scans = 0;          ///< sum of first_reported - birth over tracked targets
   std::uint64_t valid_tracks = 0, false_tracks = 0, targets_with_valid_track = 0;
   std::uint64_t false_tracks_in_clutter = 0;
   std::uint64_t id_switches = 0, fragmentations = 0, track_breaks = 0;
@@ -138,7 +142,7 @@ struct TrackScoreTotals {
   /// Per target id over runs: the confirmation delay of the runs it was
   /// tracked in, and the runs it never was (issue 18: a birth inside clutter).
   struct TargetDelay {
-    std::uint64_t latency_scans = 0, tracked = 0, never_tracked = 0;
+    std::uint64_t latency_scans = 0, report_latency_scans = 0, tracked = 0, never_tracked = 0;
   };
   std::map<std::uint32_t, TargetDelay> delay_by_target;
 
@@ -148,6 +152,9 @@ struct TrackScoreTotals {
   double nft_in_clutter() const;     ///< false tracks first confirmed inside a Gaussian clutter component, per run
   double tpd() const;                ///< covered / alive target-scans
   double ttl_scans() const;          ///< mean scans from birth to first coverage (tracked targets)
+  /// Mean scans from birth to the scan after which the first covering track
+  /// was handed out: ttl_scans() plus the output lag (tracked targets).
+  double report_delay_scans() const;
   double aee_range_m() const;        ///< mean |ground range error| over covered target-scans [m]
   double aee_bearing_rad() const;    ///< mean |bearing error| over covered target-scans [rad]
   double per_target(std::uint64_t count) const;  ///< count / targets (0 if none)
@@ -158,6 +165,7 @@ struct TrackScoreTotals {
   double settled_coverage() const;   ///< settled covered / settled alive target-scans (pooled)
   double settled_coverage_of(std::uint32_t target_id) const;  ///< the same for one target id over runs
   double ttl_scans_of(std::uint32_t target_id) const;  ///< ttl_scans() of one target id over runs (0 if never tracked)
+  double report_delay_scans_of(std::uint32_t target_id) const;  ///< the same for report_delay_scans()
 };
 
 }  // namespace mptrack::sim

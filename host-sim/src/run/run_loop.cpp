@@ -81,11 +81,17 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
     if (now > truncated) ++rec.steps_truncating;
     truncated = now;
   };
+  // The estimates a call appended were handed out after `scan`.
+  const auto stamp = [&finals](std::size_t from, std::uint32_t scan) {
+    for (std::size_t i = from; i < finals.size(); ++i) finals[i].reported_after_scan = scan;
+  };
   source.deliver([&](const scenario::SimScan& s, const RawFrame* frame) {
     rec.delivered.push_back(s.scan);
+    const std::size_t before = finals.size();
     const auto t0 = std::chrono::steady_clock::now();
     const Status st = frame != nullptr ? tracker.step_frame(*frame, s, finals) : tracker.step(s, finals);
     const auto t1 = std::chrono::steady_clock::now();
+    stamp(before, s.scan);
     count_truncation();
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     rec.latency_us[s.scan - 1] = us;
@@ -93,7 +99,9 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
     if (progress != nullptr) progress->tick();
     return us;
   }, input);
+  const std::size_t before_flush = finals.size();
   rec.statuses.push_back(tracker.flush(finals));
+  stamp(before_flush, rec.delivered.empty() ? 0U : rec.delivered.back());
   count_truncation();
   rec.counters = tracker.counters();
   rec.by_scan = estimates_by_scan(finals, rec.delivered, n);
