@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -339,14 +340,21 @@ class LaggingTracker final : public TrackerAdapter {
   std::uint32_t n_ = 0;
 };
 
-}  // namespace
-
-TEST_CASE("sim run loop: each estimate records the scan after whose step() it was handed out") {
+/// The first 5 scans of seed000-s2, run 0 begun.
+std::unique_ptr<MeasurementSource> five_scans() {
   sc::ScenarioSpec spec;
   REQUIRE(sc::builtin_scenario("seed000-s2", spec));
   truncate_scans(spec, 5);
-  MeasurementSource source(spec, 1, 1.0);
-  source.begin_run(0);
+  auto source = std::make_unique<MeasurementSource>(spec, 1, 1.0);
+  source->begin_run(0);
+  return source;
+}
+
+}  // namespace
+
+TEST_CASE("sim run loop: each estimate records the scan after whose step() it was handed out") {
+  const std::unique_ptr<MeasurementSource> owned = five_scans();
+  MeasurementSource& source = *owned;
   LaggingTracker lag;
   const RunRecord rec = run_tracker(source, lag, 0, nullptr);
   REQUIRE(rec.by_scan.size() == 5);
@@ -356,11 +364,8 @@ TEST_CASE("sim run loop: each estimate records the scan after whose step() it wa
 }
 
 TEST_CASE("sim run loop: steps whose mixture truncation grew are counted once each, flush included") {
-  sc::ScenarioSpec spec;
-  REQUIRE(sc::builtin_scenario("seed000-s2", spec));
-  truncate_scans(spec, 5);
-  MeasurementSource source(spec, 1, 1.0);
-  source.begin_run(0);
+  const std::unique_ptr<MeasurementSource> owned = five_scans();
+  MeasurementSource& source = *owned;
   TruncatingTracker a({2, 4}, true);
   const RunRecord ra = run_tracker(source, a, 0, nullptr);
   CHECK(ra.steps_truncating == 3);  // steps 2 and 4 (7 components each) and flush
