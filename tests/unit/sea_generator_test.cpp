@@ -29,7 +29,7 @@ TEST_CASE("sea scenes: the same seed gives the same samples, another seed other 
   CHECK(sa.re != scn.re);
 }
 
-TEST_CASE("sea scenes: 15 scans, then none; both built-ins validate") {
+TEST_CASE("sea scenes: 15 scans, then none; every built-in validates") {
   for (const auto& name : sea::builtin_sea_scenario_names()) {
     sea::SeaScenario s;
     REQUIRE(sea::builtin_sea_scenario(name, s));
@@ -95,4 +95,38 @@ TEST_CASE("sea scenes: targets keep Doppler in [-400, 300] Hz, range inside the 
       }
     }
   }
+}
+
+TEST_CASE("sea scenes: sea-c's targets keep Doppler in [-90, 30] Hz, inside sea-b's clutter band") {
+  sea::SeaScenario s;
+  REQUIRE(sea::builtin_sea_scenario("seed003-sea-c", s));
+  // sea-b's clutter is centred at -30 Hz with a 35 Hz sd: [-90, 30] Hz is
+  // within 1.8 sd of that centre.
+  int seen = 0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    sea::SeaSceneGenerator g(s, seed);
+    sea::SeaScan scan;
+    while (g.next(scan)) {
+      for (const auto& t : scan.truth) {
+        CHECK(t.doppler_hz >= -90.0);
+        CHECK(t.doppler_hz <= 30.0);
+        ++seen;
+      }
+    }
+  }
+  CHECK(seen == 5 * 15 * 3);
+}
+
+TEST_CASE("sea scenes: sea-c's clutter is sea-b's (the same samples without targets)") {
+  sea::SeaScenario b, c;
+  REQUIRE(sea::builtin_sea_scenario("seed003-sea-b", b));
+  REQUIRE(sea::builtin_sea_scenario("seed003-sea-c", c));
+  b.num_targets = 0;
+  c.num_targets = 0;
+  sea::SeaSceneGenerator gb(b, 4), gc(c, 4);
+  sea::SeaScan sb, sc;
+  REQUIRE(gb.next(sb));
+  REQUIRE(gc.next(sc));
+  CHECK(sb.re == sc.re);
+  CHECK(sb.im == sc.im);
 }

@@ -26,7 +26,7 @@ struct DatasetArgs {
 int run_dataset(const DatasetArgs& a) {
   sea::DatasetConfig c;
   if (!sea::builtin_sea_scenario(a.scenario, c.scenario)) {
-    std::fprintf(stderr, "error: unknown sea scenario '%s' (seed003-sea-a, seed003-sea-b)\n", a.scenario.c_str());
+    std::fprintf(stderr, "error: unknown sea scenario '%s' (seed003-sea-a, seed003-sea-b, seed003-sea-c)\n", a.scenario.c_str());
     return 2;
   }
   const bool one_scr = a.scr > -999.0;
@@ -72,7 +72,7 @@ Subcommand add_dataset_command(CLI::App& app) {
   auto args = std::make_shared<DatasetArgs>();
   CLI::App* cmd = app.add_subcommand(
       "dataset", "seed 003 classifier data: 5x512 range-Doppler patches of every plot, labels, SCR (.npy)");
-  cmd->add_option("--scenario", args->scenario, "seed003-sea-a (train) or seed003-sea-b (held out)");
+  cmd->add_option("--scenario", args->scenario, "seed003-sea-a (train), seed003-sea-b or seed003-sea-c (held out)");
   cmd->add_option("--scr-min", args->scr_min, "lowest SCR [dB]");
   cmd->add_option("--scr-max", args->scr_max, "highest SCR [dB]");
   cmd->add_option("--scr-step", args->scr_step, "SCR step [dB]");

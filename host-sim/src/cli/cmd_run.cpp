@@ -68,7 +68,7 @@ int run_adc_scenario(const RunOptions& o) {
 void add_run_options(CLI::App& app, RunOptions& o) {
   std::string tracker_help = "tracker:";
   for (const auto& t : tracker_list()) tracker_help += "\n  " + t.name + ": " + t.description;
-  app.add_option("--scenario", o.scenario_name, "built-in scenario: seed000-s1 | seed000-s2 | seed000-s3 | seed001-s1..s5 | seed002-othr | seed004-drones | mimo-interference (raw ADC) | seed003-sea-a | seed003-sea-b (sea clutter)")
+  app.add_option("--scenario", o.scenario_name, "built-in scenario: seed000-s1 | seed000-s2 | seed000-s3 | seed001-s1..s5 | seed002-othr | seed004-drones | mimo-interference (raw ADC) | seed003-sea-a | seed003-sea-b | seed003-sea-c (sea clutter)")
       ->capture_default_str();
   app.add_option("--scenario-file", o.scenario_file, "load a scenario from JSON (schema: host-sim/scenarios/*.json)")
       ->check(CLI::ExistingFile);

@@ -28,7 +28,7 @@ namespace mptrack::sim {
 /// +-1 deg around boresight, range noise one range bin (seed 003 eq. (4)).
 scenario::ScenarioSpec sea_spec_view(const sea::SeaScenario& s);
 
-/// True for the built-in sea scenario names (seed003-sea-a, seed003-sea-b).
+/// True for the built-in sea scenario names (seed003-sea-a, seed003-sea-b, seed003-sea-c).
 bool is_sea_scenario(const std::string& name);
 
 /// One range-Doppler power map kept for the plot (run 0, one scan), dB.

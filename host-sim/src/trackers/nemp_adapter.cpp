@@ -76,7 +76,7 @@ class NempAdapter final : public TrackerAdapter {
     }
     if (classifier_->init(classify::trained_weights()) != Status::kOk) return "classifier weights refused";
     if (!setup.sea_scenario) {
-      return variant_ + " needs the range-Doppler patches of a seed003-sea scenario (seed003-sea-a, seed003-sea-b)";
+      return variant_ + " needs the range-Doppler patches of a seed003-sea scenario (seed003-sea-a, seed003-sea-b, seed003-sea-c)";
     }
     const scenario::ScenarioSpec& spec = setup.spec;
     MfbpParams<double> p = seed000_default_params<double>();

@@ -4,9 +4,11 @@
 // over range and time, thermal noise, and injected moving targets at a given
 // signal-to-clutter ratio (seed 003 Sec. IV, eq. (3)).
 //
-// Two built-in sea states stand in for the paper's two data sets:
-// seed003-sea-a (trained on, the CSIR role) and seed003-sea-b (held out, the
-// IPIX role: spikier texture, wider and faster-drifting spectrum).
+// Built-in sea states stand in for the paper's two data sets:
+// seed003-sea-a (trained on, the CSIR role) and two held out in the IPIX role:
+// seed003-sea-b (spikier texture, wider and faster-drifting spectrum) and
+// seed003-sea-c (sea-b's clutter with small floating targets whose Doppler
+// lies inside the clutter band, as IPIX's target does).
 #pragma once
 
 #include <cstdint>
@@ -60,7 +62,7 @@ struct SeaScenario {
   std::string validate() const;
 };
 
-/// seed003-sea-a, seed003-sea-b.
+/// seed003-sea-a, seed003-sea-b, seed003-sea-c.
 std::vector<std::string> builtin_sea_scenario_names();
 /// The named built-in sea scenario; false if the name is unknown.
 bool builtin_sea_scenario(const std::string& name, SeaScenario& out);
