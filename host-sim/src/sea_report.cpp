@@ -93,22 +93,91 @@ PairedDifference nemp_minus_mpnn(const std::vector<SeaSummary>& col, const Paire
   return paired_difference(m.per_run(col[a]), m.per_run(col[b]));
 }
 
+/// One value per run of `tracker`'s metric averaged over the SCR columns
+/// (in column order); empty if a column lacks the tracker or the run counts
+/// differ.
+std::vector<double> mean_over_scr(const std::vector<std::vector<SeaSummary>>& r, const char* tracker,
+                                  const PairedMetric& m) {
+  std::vector<double> sum;
+  for (const auto& col : r) {
+    const std::size_t i = tracker_index(col, tracker);
+    if (i == col.size()) return {};
+    const std::vector<double>& runs = m.per_run(col[i]);
+    if (sum.empty()) sum.assign(runs.size(), 0.0);
+    if (runs.size() != sum.size()) return {};
+    for (std::size_t k = 0; k < runs.size(); ++k) sum[k] += runs[k];
+  }
+  for (double& v : sum) v /= static_cast<double>(r.size());
+  return sum;
+}
+
+/// NEMP - MP-NN over every SCR at once: each run's values are averaged over
+/// the SCRs first, then paired. Run k is the same scene at every SCR, so the
+/// SCR columns are not independent and their standard errors do not combine
+/// as if they were (docs/algorithms/metrics.md §Paired differences).
+PairedDifference nemp_minus_mpnn_over_scr(const std::vector<std::vector<SeaSummary>>& r, const PairedMetric& m) {
+  return paired_difference(mean_over_scr(r, "nemp", m), mean_over_scr(r, "mfbp-nn", m));
+}
+
+std::string short_name(const std::string& tracker) {
+  const std::string n = paper_name(tracker);
+  const std::size_t space = n.find(' ');
+  return space == std::string::npos ? n : n.substr(0, space);
+}
+
+/// The trackers of one SCR column within 0.005 of its best value of `key`
+/// as printed in the table (sign +1: higher is better), "/"-separated.
+std::string best_in_column(const std::vector<SeaSummary>& col, const char* key, double sign) {
+  constexpr double kLevel = 0.005;
+  std::vector<double> v(col.size(), 0.0);
+  std::vector<bool> has(col.size(), false);
+  double best = 0.0;
+  bool any = false;
+  for (std::size_t t = 0; t < col.size(); ++t) {
+    const nlohmann::ordered_json j = sea_summary_to_json(col[t]);
+    if (!j.contains(key) || !j[key].is_number()) continue;
+    v[t] = sign * j[key].get<double>();
+    has[t] = true;
+    if (!any || v[t] > best) best = v[t];
+    any = true;
+  }
+  std::string names;
+  for (std::size_t t = 0; t < col.size(); ++t) {
+    if (has[t] && !(v[t] < best - kLevel)) names += (names.empty() ? "" : "/") + short_name(col[t].base.tracker);
+  }
+  return names.empty() ? "n/a" : names;
+}
+
+/// "best AMOTA" / "best MOSPA" rows under the metric table.
+std::string best_rows(const std::vector<std::vector<SeaSummary>>& r) {
+  std::string s = "| best AMOTA (within 0.005) | |";
+  for (const auto& col : r) s += " " + best_in_column(col, "amota", 1.0) + " |";
+  s += "\n| best MOSPA (within 0.005) | |";
+  for (const auto& col : r) s += " " + best_in_column(col, "mospa_mahalanobis", -1.0) + " |";
+  return s + "\n";
+}
+
 /// The paired rows under the table, or "" without both trackers.
 std::string paired_markdown(const std::vector<std::vector<SeaSummary>>& r) {
   if (nemp_minus_mpnn(r.front(), kPaired[0]).runs == 0) return "";
   std::string s =
       "\nNEMP - MP-NN, paired over runs on the same scenes: mean of the per-run differences +- its "
-      "standard error (AMOTA higher, MOSPA lower is NEMP ahead; 2 standard errors is about 95 %).\n\n" +
-      scr_header(r, "| metric |", "|---|");
+      "standard error (AMOTA higher, MOSPA lower is NEMP ahead; 2 standard errors is about 95 %). The last "
+      "column averages each run over the SCRs first, then pairs the runs.\n\n";
+  std::string header = scr_header(r, "| metric |", "|---|");
+  header.insert(header.find('\n'), " mean over SCRs |");
+  header.insert(header.size() - 1, "---:|");  // the rule line, before its newline
+  s += header;
+  const auto text = [](const PairedDifference& d) {
+    char b[64];
+    std::snprintf(b, sizeof b, " %+.3f +- %.3f |", d.mean, d.standard_error);
+    return std::string(b);
+  };
   for (const PairedMetric& m : kPaired) {
     s += std::string("| ") + m.title + " |";
-    for (const auto& col : r) {
-      const PairedDifference d = nemp_minus_mpnn(col, m);
-      char b[64];
-      std::snprintf(b, sizeof b, " %+.3f +- %.3f |", d.mean, d.standard_error);
-      s += b;
-    }
-    s += "\n";
+    for (const auto& col : r) s += text(nemp_minus_mpnn(col, m));
+    const PairedDifference all = nemp_minus_mpnn_over_scr(r, m);
+    s += (all.runs > 0 ? text(all) : std::string(" n/a |")) + "\n";
   }
   return s;
 }
@@ -154,6 +223,7 @@ std::string sea_compare_to_markdown(const SeaCompareConfig& cfg, const std::vect
       s += "\n";
     }
   }
+  s += best_rows(r);
   s += "\nn/a: the field is not in summary.json (yet), or no track was paired with a target. IDS and Frag per target (track scores); RMSE of the confirmed "
        "track paired with each target (Mahalanobis on range and range rate, within 9.4); OSPA on range with p = 2, c = 9.4 x 15 m.\n";
   return s + paired_markdown(r);
@@ -176,7 +246,16 @@ nlohmann::ordered_json sea_compare_to_json(const SeaCompareConfig& cfg, const st
     }
     levels.push_back(level);
   }
-  return {{"scenario", cfg.scenario.name}, {"runs", cfg.runs}, {"seed", cfg.seed}, {"levels", levels}};
+  nlohmann::ordered_json out = {{"scenario", cfg.scenario.name}, {"runs", cfg.runs}, {"seed", cfg.seed}, {"levels", levels}};
+  if (!r.empty() && nemp_minus_mpnn_over_scr(r, kPaired[0]).runs > 0) {
+    nlohmann::ordered_json paired;
+    for (const PairedMetric& m : kPaired) {
+      const PairedDifference d = nemp_minus_mpnn_over_scr(r, m);
+      paired[m.key] = {{"mean", d.mean}, {"standard_error", d.standard_error}, {"runs", d.runs}};
+    }
+    out["nemp_minus_mfbp_nn_over_scr"] = paired;
+  }
+  return out;
 }
 
 }  // namespace mptrack::sim
