@@ -2,10 +2,10 @@
 """ROC AUC of the committed float classifier on one dataset, per SCR.
 
 Scores every target patch and a seeded subsample of the clutter patches of a
-dataset directory written by `mptrack-sim dataset` (the subsample rule of
-train_classifier.py's evaluate()), with the belief input at 0.5 (the patch
-alone, as MP-NN's removal and the birth veto use it) and with the belief NEMP
-recorded for the patch. Use it to ask how well the classifier carries over to
+dataset directory written by `mptrack-sim dataset` (roc.scored_rows, the
+rows train_classifier.py and quantise_classifier.py score), with the belief
+input at 0.5 (the patch alone, as MP-NN's removal and the birth veto use it)
+and with the belief NEMP recorded for the patch. Use it to ask how well the classifier carries over to
 a sea state it was not trained on (docs/algorithms/sea_clutter.md §Results):
 
   mptrack-sim dataset --scenario seed003-sea-c --runs 3 --run-offset 1000 --out DIR
@@ -19,27 +19,16 @@ import json
 import numpy as np
 
 from quantise_classifier import FLOAT_HEADER, batched, float_layers, load, mlp, parse_float_header, sigmoid
-from roc import roc_auc  # same directory
+from roc import auc_by_scr, roc_auc, scored_rows  # same directory
 
 
-def subsample(data, seed, max_clutter):
-    rng = np.random.default_rng(seed)
-    pos = np.flatnonzero(data["labels"] == 1)
-    neg = np.flatnonzero(data["labels"] == 0)
-    if len(neg) > max_clutter:
-        neg = rng.choice(neg, max_clutter, replace=False)
-    return np.sort(np.concatenate([pos, neg]))
-
-
-def auc_table(data, idx, prob_half, prob_nemp):
-    labels, scr = data["labels"][idx], data["scr_db"][idx]
+def auc_table(labels, scr_db, prob_half, prob_nemp):
     rows = {}
-    for s in sorted(set(scr.tolist())):
-        m = scr == s
-        if labels[m].min() == labels[m].max():
-            continue  # one class only: no AUC
-        rows[f"{s:g}"] = {"belief_0.5": roc_auc(prob_half[m], labels[m]),
-                          "nemp_belief": roc_auc(prob_nemp[m], labels[m]), "targets": int(labels[m].sum())}
+    half, nemp = auc_by_scr(prob_half, labels, scr_db), auc_by_scr(prob_nemp, labels, scr_db)
+    for v in np.unique(scr_db):
+        key = f"{v:g}"
+        if key in half:
+            rows[key] = {"belief_0.5": half[key], "nemp_belief": nemp[key], "targets": int(labels[scr_db == v].sum())}
     rows["all"] = {"belief_0.5": roc_auc(prob_half, labels), "nemp_belief": roc_auc(prob_nemp, labels),
                    "targets": int(labels.sum()), "clutter_scored": int(len(labels) - labels.sum())}
     return rows
@@ -53,11 +42,11 @@ def main():
     a = ap.parse_args()
     fw = parse_float_header(FLOAT_HEADER)
     data = load(a.dataset)
-    idx = subsample(data, a.seed, a.max_clutter)
+    idx = scored_rows(data["labels"], np.random.default_rng(a.seed), a.max_clutter)
     feats = sigmoid(batched(lambda c: float_layers(fw, c)[-1], data["patches"][idx]))
     prob_half = mlp(fw, feats, np.full(len(idx), 0.5))
     prob_nemp = mlp(fw, feats, data["belief"][idx].astype(np.float64))
-    print(json.dumps(auc_table(data, idx, prob_half, prob_nemp), indent=2))
+    print(json.dumps(auc_table(data["labels"][idx], data["scr_db"][idx], prob_half, prob_nemp), indent=2))
 
 
 if __name__ == "__main__":

@@ -31,7 +31,7 @@ import re
 
 import numpy as np
 
-from roc import roc_auc  # same directory
+from roc import roc_auc, scored_rows  # same directory
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FLOAT_HEADER = ROOT / "core/include/mptrack/classify/generated/sea_classifier_weights.h"
@@ -263,13 +263,8 @@ def load(dirname):
 
 def evaluate(fw, q, data, seed, max_clutter):
     """AUC of g_c fed float and int8 features (recorded beliefs, the clutter
-    subsample of train_classifier.py's evaluate()), and the feature error."""
-    rng = np.random.default_rng(seed)
-    pos = np.flatnonzero(data["labels"] == 1)
-    neg = np.flatnonzero(data["labels"] == 0)
-    if len(neg) > max_clutter:
-        neg = rng.choice(neg, max_clutter, replace=False)
-    idx = np.sort(np.concatenate([pos, neg]))
+    subsample of roc.scored_rows), and the feature error."""
+    idx = scored_rows(data["labels"], np.random.default_rng(seed), max_clutter)
     codes, labels, belief = data["patches"][idx], data["labels"][idx], data["belief"][idx].astype(np.float64)
     f_float = sigmoid(batched(lambda c: float_layers(fw, c)[-1], codes))
     f_q8, _ = q8_features(q, codes)
@@ -280,7 +275,7 @@ def evaluate(fw, q, data, seed, max_clutter):
                                   "mean": float(err.mean())},
             "probability_abs_error": {"max": float(np.abs(p_q8 - p_float).max()),
                                       "p99": float(np.percentile(np.abs(p_q8 - p_float), 99))},
-            "targets": int(len(pos)), "clutter_scored": int(len(neg))}
+            "targets": int(labels.sum()), "clutter_scored": int(len(labels) - labels.sum())}
 
 
 def main():

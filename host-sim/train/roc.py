@@ -1,5 +1,6 @@
-"""ROC AUC of classifier scores (numpy only), shared by train_classifier.py
-and quantise_classifier.py so both report the same statistic."""
+"""ROC AUC of classifier scores (numpy only), shared by train_classifier.py,
+quantise_classifier.py and dataset_auc.py so all report the same statistic on
+the same rows."""
 import numpy as np
 
 
@@ -21,3 +22,24 @@ def roc_auc(scores, labels):
     pos = labels == 1
     n_pos, n_neg = pos.sum(), (~pos).sum()
     return float((r[pos].sum() - n_pos * (n_pos + 1) / 2.0) / (n_pos * n_neg))
+
+
+def scored_rows(labels, rng, max_clutter):
+    """Indices (sorted) of the rows an AUC is taken over: every target row and
+    at most max_clutter clutter rows drawn without replacement by rng (a
+    numpy Generator; the draw is skipped when there are no more than that)."""
+    pos = np.flatnonzero(labels == 1)
+    neg = np.flatnonzero(labels == 0)
+    if len(neg) > max_clutter:
+        neg = rng.choice(neg, max_clutter, replace=False)
+    return np.sort(np.concatenate([pos, neg]))
+
+
+def auc_by_scr(scores, labels, scr_db):
+    """{"SCR": AUC} for every SCR value holding both classes."""
+    out = {}
+    for v in np.unique(scr_db):
+        m = scr_db == v
+        if labels[m].min() != labels[m].max():
+            out[f"{v:g}"] = roc_auc(scores[m], labels[m])
+    return out

@@ -29,7 +29,7 @@ import numpy as np
 import torch
 from torch import nn
 
-from roc import roc_auc  # same directory
+from roc import auc_by_scr, roc_auc, scored_rows  # same directory
 
 REF_BELIEFS = (0.2, 0.5, 0.8)
 
@@ -141,11 +141,7 @@ def run_epochs(stage, params, forward, data, norm, epochs, lr, batch, rng, mask_
 
 
 def evaluate(cnn, mlp, data, norm, rng, max_clutter, fixed_belief=None):
-    pos = np.flatnonzero(data["labels"] == 1)
-    neg = np.flatnonzero(data["labels"] == 0)
-    if len(neg) > max_clutter:
-        neg = rng.choice(neg, max_clutter, replace=False)
-    idx = np.sort(np.concatenate([pos, neg]))
+    idx = scored_rows(data["labels"], rng, max_clutter)
     out = []
     with torch.no_grad():
         for s in range(0, len(idx), 1024):
@@ -156,15 +152,9 @@ def evaluate(cnn, mlp, data, norm, rng, max_clutter, fixed_belief=None):
             out.append(mlp(cnn(to_input(data["patches"][b], *norm)), w).numpy())
     scores = np.concatenate(out)
     labels = data["labels"][idx]
-    res = {"auc": roc_auc(scores, labels), "targets": int(len(pos)), "clutter_scored": int(len(neg)),
-           "rows": int(len(data["labels"]))}
-    per_scr = {}
-    scr = data["scr_db"][idx]
-    for v in np.unique(scr):
-        m = scr == v
-        if labels[m].min() != labels[m].max():
-            per_scr[f"{v:g}"] = roc_auc(scores[m], labels[m])
-    res["auc_per_scr_db"] = per_scr
+    res = {"auc": roc_auc(scores, labels), "targets": int(labels.sum()),
+           "clutter_scored": int(len(labels) - labels.sum()), "rows": int(len(data["labels"]))}
+    res["auc_per_scr_db"] = auc_by_scr(scores, labels, data["scr_db"][idx])
     return res
 
 
