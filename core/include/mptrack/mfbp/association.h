@@ -143,8 +143,9 @@ class Associator {
       mo.predictive = mo.ok && p.tentative_predictive_in_clutter && !t.confirmed &&
                       inside_weaker_component(mo.z(0), mo.z(1), t.igs[k].mean(), k, s.time_us, cl, p);
       // Online filter: young tracks in any component confirm by the score
-      // (docs/algorithms/mfbp.md §Birth).
-      if (mo.ok && filter_holds_in_any_component(t, p) &&
+      // (docs/algorithms/mfbp.md §Birth). The mark is sticky, so once set
+      // the gate test is not repeated.
+      if (mo.ok && !t.predicted_in_component && filter_holds_in_any_component(t, p) &&
           inside_any_component(mo.z(0), mo.z(1), k, s.time_us, cl, p)) {
         t.predicted_in_component = true;
       }
