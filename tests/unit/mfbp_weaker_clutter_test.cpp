@@ -117,11 +117,11 @@ TEST_CASE("mfbp young track in weaker clutter: confirmed at confirm_threshold_in
   tracks[1].start(2, 0, 0.5);
   tracks[1].predictive_evidence = true;
   for (auto* t : {&tracks[0], &tracks[1]}) t->vis[0] = 0.98;  // above 0.75, below 0.99
-  mfbp::confirm_tracks(tracks, 1, p, counters);
+  mfbp::confirm_tracks(tracks, 1, 0, p, counters);
   CHECK(tracks[0].confirmed);
   CHECK_FALSE(tracks[1].confirmed);
   tracks[1].vis[0] = 0.99;
-  mfbp::confirm_tracks(tracks, 1, p, counters);
+  mfbp::confirm_tracks(tracks, 1, 0, p, counters);
   CHECK(tracks[1].confirmed);
   CHECK(counters.tracks_confirmed == 2u);
   // Off: the usual threshold for every track.
@@ -158,12 +158,12 @@ TEST_CASE("mfbp online filter in weaker clutter: confirmed when the summed ln(xi
   // and 11.98 after four.
   for (int scan = 1; scan <= 3; ++scan) {
     filter_scan(tracks[0], 20.0);
-    mfbp::confirm_tracks(tracks, 1, p, counters);
+    mfbp::confirm_tracks(tracks, 1, 0, p, counters);
     CHECK_FALSE(tracks[0].confirmed);
   }
   CHECK(tracks[0].score == doctest::Approx(3.0 * std::log(20.0)).epsilon(1e-9));
   filter_scan(tracks[0], 20.0);
-  mfbp::confirm_tracks(tracks, 1, p, counters);
+  mfbp::confirm_tracks(tracks, 1, 0, p, counters);
   CHECK(tracks[0].confirmed);
   CHECK(counters.tracks_confirmed == 1u);
 }
@@ -178,7 +178,7 @@ TEST_CASE("mfbp online filter in weaker clutter: a scan against the track lowers
   const double ratios[] = {20.0, 0.25, 20.0, 20.0};  // ln: 3.00 - 1.39 + 3.00 + 3.00 = 7.60
   for (double r : ratios) {
     filter_scan(tracks[0], r);
-    mfbp::confirm_tracks(tracks, 1, p, counters);
+    mfbp::confirm_tracks(tracks, 1, 0, p, counters);
   }
   CHECK(tracks[0].score == doctest::Approx(3.0 * std::log(20.0) + std::log(0.25)).epsilon(1e-9));
   CHECK_FALSE(tracks[0].confirmed);
@@ -202,7 +202,7 @@ TEST_CASE("mfbp score confirmation: not in the smoother, not for plain tracks, n
       filter_scan(t, 20.0);
       t.vis[0] = 0.7;  // below 0.75: b_s confirms none of them
     }
-    mfbp::confirm_tracks(tracks, 1, p, counters);
+    mfbp::confirm_tracks(tracks, 1, 0, p, counters);
     CHECK(mfbp::filter_score_confirms(tracks[1], 1, filter) == false);
     CHECK(mfbp::filter_score_confirms(tracks[2], 1, off) == false);
   }
@@ -344,9 +344,55 @@ TEST_CASE("mfbp any component: a filter track predicted in a component needs the
   // other's score is 2 ln 4 = 2.77 < 9.21.
   for (int scan = 0; scan < 2; ++scan) {
     for (auto& t : tracks) filter_scan(t, 4.0);
-    mfbp::confirm_tracks(tracks, 1, p, counters);
+    mfbp::confirm_tracks(tracks, 1, 0, p, counters);
   }
   CHECK(tracks[0].confirmed);
   CHECK_FALSE(tracks[1].confirmed);
   CHECK(tracks[1].score == doctest::Approx(2.0 * std::log(4.0)).epsilon(1e-9));
+}
+
+TEST_CASE("mfbp confirm_lookahead: capped at the window, 0 when the window finalises every scan") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  p.confirm_lookahead_in_clutter = 2;
+  CHECK(mfbp::confirm_lookahead(7, 1, p) == 2u);  // slide 1: the window's newest 2 scans excluded
+  CHECK(mfbp::confirm_lookahead(2, 1, p) == 1u);  // at most n - 1: scan 0 stays testable
+  CHECK(mfbp::confirm_lookahead(7, 7, p) == 0u);  // flush(): no later window sees these scans
+  CHECK(mfbp::confirm_lookahead(1, 1, p) == 0u);  // online filter
+  CHECK(mfbp::confirm_lookahead(0, 0, p) == 0u);
+  p.confirm_lookahead_in_clutter = 9;
+  CHECK(mfbp::confirm_lookahead(7, 3, p) == 6u);
+}
+
+TEST_CASE("mfbp young track in weaker clutter: confirms only on a scan with `lookahead` scans after it") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  TrackerCounters counters{};
+  // Window of 4 scans; both tracks exist from scan 0 and reach 0.99 only on
+  // the newest scan (3). Track 1 is held to the in-clutter threshold.
+  tracks[0].start(1, 0, 0.5);
+  tracks[1].start(2, 0, 0.5);
+  tracks[1].predictive_evidence = true;
+  for (auto* t : {&tracks[0], &tracks[1]}) {
+    for (std::size_t k = 0; k < 3; ++k) t->vis[k] = 0.5;
+    t->vis[3] = 0.995;
+  }
+  mfbp::confirm_tracks(tracks, 4, 2, p, counters);
+  CHECK(tracks[0].confirmed);        // the plain threshold ignores the lookahead
+  CHECK_FALSE(tracks[1].confirmed);  // scan 3 has no later window scan; 0..1 are below 0.99
+  tracks[1].vis[1] = 0.995;          // scan 1 has 2 later window scans (2, 3)
+  mfbp::confirm_tracks(tracks, 4, 2, p, counters);
+  CHECK(tracks[1].confirmed);
+  CHECK(counters.tracks_confirmed == 2u);
+}
+
+TEST_CASE("mfbp young track in weaker clutter: lookahead 0 tests every window scan") {
+  MfbpParams<double> p = seed000_default_params<double>();
+  mfbp::TrackTable<double, WcCaps> tracks{};
+  TrackerCounters counters{};
+  tracks[0].start(1, 0, 0.5);
+  tracks[0].predictive_evidence = true;
+  for (std::size_t k = 0; k < 3; ++k) tracks[0].vis[k] = 0.5;
+  tracks[0].vis[3] = 0.995;
+  mfbp::confirm_tracks(tracks, 4, 0, p, counters);
+  CHECK(tracks[0].confirmed);
 }

@@ -48,6 +48,7 @@ const Count kCounts[] = {
     {"delete_run", [](P& p) -> std::size_t& { return p.delete_run; }},
     {"window_length", [](P& p) -> std::size_t& { return p.window_length; }},
     {"slide", [](P& p) -> std::size_t& { return p.slide; }},
+    {"confirm_lookahead_in_clutter", [](P& p) -> std::size_t& { return p.confirm_lookahead_in_clutter; }},
     {"mp_max_iterations", [](P& p) -> std::size_t& { return p.mp_max_iterations; }},
     {"bp_max_iterations", [](P& p) -> std::size_t& { return p.bp_max_iterations; }},
     {"birth_max_per_window", [](P& p) -> std::size_t& { return p.birth_max_per_window; }},

@@ -10,9 +10,9 @@
 //   at the end:     tracker.flush();
 //
 // One code path for both modes: window_length K = 1 is the online filter
-// (every step finalises its scan), K = 7 / slide 3 the paper's smoother
-// (a window is processed when K scans are held; `slide` scans are then
-// finalised, flush() finalises the rest).
+// (every step finalises its scan), K = 7 the smoother (a window is
+// processed when K scans are held; `slide` scans are then finalised, 1 by
+// default, 3 in the paper; flush() finalises the rest).
 //
 // Per processed window (seed 000 Algorithm 1; docs/algorithms/mfbp.md
 // §Window schedule), the schedule in process_window():
@@ -273,7 +273,7 @@ class MfbpTracker {
     }
     if (params_.late_birth) late_birth(n);
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kOutput);
-    mfbp::confirm_tracks(tracks_, n, params_, counters_);
+    mfbp::confirm_tracks(tracks_, n, mfbp::confirm_lookahead(n, finalize_count, params_), params_, counters_);
     mfbp::suppress_duplicates(tracks_, n, params_, counters_);
     for (std::size_t k = 0; k < finalize_count; ++k) emit_estimate(k);
     mfbp::manage_tracks(tracks_, clutter_, n, finalize_count, n > 0 ? store_.win(n - 1).time_us : 0u, params_,

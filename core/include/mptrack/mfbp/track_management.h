@@ -3,8 +3,9 @@
 // reporting):
 //   * a tentative track is confirmed once its visibility b_s (eq. (64))
 //     reaches confirm_threshold on a window scan (confirmation_threshold: a
-//     young track inside weaker clutter needs confirm_threshold_in_clutter,
-//     or in the online filter the score of filter_score_confirms);
+//     young track inside weaker clutter needs confirm_threshold_in_clutter
+//     on a scan with confirm_lookahead_in_clutter later window scans, or in
+//     the online filter the score of filter_score_confirms);
 //   * a track is deleted when b_s < delete_threshold on delete_run
 //     consecutive scans (finalised history + the window tail), or when it
 //     stays tentative for tentative_timeout_scans finalised scans; a
@@ -77,9 +78,22 @@ bool filter_score_confirms(TrackSlot<T, Caps>& t, std::size_t n, const MfbpParam
   return t.score >= p.filter_confirm_score_in_clutter;
 }
 
+/// Window scans after the last scan on which a track held to
+/// confirm_threshold_in_clutter may confirm (confirm_lookahead_in_clutter,
+/// capped at n - 1). 0 when this window finalises every scan it holds
+/// (flush(), or slide == window_length): no later window will see them.
+template <class T>
+std::size_t confirm_lookahead(std::size_t n, std::size_t finalize_count, const MfbpParams<T>& p) {
+  if (n == 0 || finalize_count >= n) return 0;
+  return p.confirm_lookahead_in_clutter < n - 1 ? p.confirm_lookahead_in_clutter : n - 1;
+}
+
+/// Confirms tentative tracks on window scans 0..n-1 (b_s >= the track's
+/// confirmation_threshold on some scan; a track held to the in-clutter
+/// threshold only on a scan with `lookahead` window scans after it).
 template <class T, class Caps>
-void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams<T>& p,
-                    TrackerCounters& counters) {
+void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, std::size_t lookahead,
+                    const MfbpParams<T>& p, TrackerCounters& counters) {
   for (auto& t : tracks) {
     if (!t.alive || t.confirmed) continue;
     if (filter_score_confirms(t, n, p)) {
@@ -87,8 +101,10 @@ void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpParams
       ++counters.tracks_confirmed;
       continue;
     }
-    for (std::size_t k = t.first; k < n; ++k) {
-      if (t.vis[k] >= confirmation_threshold(t, p)) {
+    const T threshold = confirmation_threshold(t, p);
+    const std::size_t last = threshold > p.confirm_threshold ? n - lookahead : n;
+    for (std::size_t k = t.first; k < last; ++k) {
+      if (t.vis[k] >= threshold) {
         t.confirmed = true;
         ++counters.tracks_confirmed;
         break;
