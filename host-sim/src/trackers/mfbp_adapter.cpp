@@ -42,7 +42,8 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
     if (std::string why = polar_scenario_required(setup, variant_); !why.empty()) return why;
     spec_ = setup.spec;
     scale_ = setup.clutter_scale;
-    MfbpParams<double> p = seed000_default_params<double>();
+    MfbpParams<double> p =
+        variant_ == "mfbp-s1" ? every_scan_smoother_params<double>() : seed000_default_params<double>();
     p.region = scenario_region(spec_);
     p.scan_period_s = spec_.scan_period_s;
     set_scenario_noise(spec_, p.noise);
@@ -69,7 +70,7 @@ class MfbpAdapter final : public CoreTrackerAdapter<Tracker> {
       p.known_clutter = known_clutter(1);
     } else if (variant_ == "mfbp-st") {
       p.mp_max_iterations = 1;
-    } else if (variant_ != "mfbp") {
+    } else if (variant_ != "mfbp" && variant_ != "mfbp-s1") {
       return "unknown MF-BP variant " + variant_;
     }
     if (setup.sea_scenario) {

@@ -58,12 +58,6 @@ inline void configure_sea_mfbp(const TrackerSetup& setup, SeaBirths births, Mfbp
   if (births == SeaBirths::kClassified) {
     p.window_length = 4;
     p.slide = 1;
-  } else {
-    // MP keeps the paper's 7 / 3, with which its tables were measured: every
-    // extra window also feeds its blind clutter births (7 / 2: AMOTA
-    // -0.57 -> -0.79 at 0 dB, docs/algorithms/mfbp.md §Window schedule).
-    p.window_length = 7;
-    p.slide = 3;
   }
 }
 

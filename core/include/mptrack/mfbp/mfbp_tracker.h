@@ -10,9 +10,9 @@
 //   at the end:     tracker.flush();
 //
 // One code path for both modes: window_length K = 1 is the online filter
-// (every step finalises its scan), K = 7 the smoother (a window is
-// processed when K scans are held; `slide` scans are then finalised, 1 by
-// default, 3 in the paper; flush() finalises the rest).
+// (every step finalises its scan), K = 7 / slide 3 the paper's smoother
+// (a window is processed when K scans are held; `slide` scans are then
+// finalised, flush() finalises the rest).
 //
 // Per processed window (seed 000 Algorithm 1; docs/algorithms/mfbp.md
 // §Window schedule), the schedule in process_window():
