@@ -109,13 +109,23 @@ TEST_CASE("mfbp young track in weaker clutter: predictive evidence N(y; z, Sz + 
   CHECK(pred_list.v[0] - mf_list.v[0] == doctest::Approx(7.0 - std::log(6.0) - 1.0 / 3.0).epsilon(1e-12));
 }
 
+namespace {
+
+/// Tentative tracks ids 1 and 2 from scan 0; the second is held to
+/// confirm_threshold_in_clutter (it scored with the predictive density).
+void start_plain_and_held(mfbp::TrackTable<double, WcCaps>& tracks) {
+  tracks[0].start(1, 0, 0.5);
+  tracks[1].start(2, 0, 0.5);
+  tracks[1].predictive_evidence = true;
+}
+
+}  // namespace
+
 TEST_CASE("mfbp young track in weaker clutter: confirmed at confirm_threshold_in_clutter") {
   MfbpParams<double> p = seed000_default_params<double>();
   mfbp::TrackTable<double, WcCaps> tracks{};
   TrackerCounters counters{};
-  tracks[0].start(1, 0, 0.5);
-  tracks[1].start(2, 0, 0.5);
-  tracks[1].predictive_evidence = true;
+  start_plain_and_held(tracks);
   for (auto* t : {&tracks[0], &tracks[1]}) t->vis[0] = 0.98;  // above 0.75, below 0.99
   mfbp::confirm_tracks(tracks, 1, 0, p, counters);
   CHECK(tracks[0].confirmed);
@@ -369,9 +379,7 @@ TEST_CASE("mfbp young track in weaker clutter: confirms only on a scan with `loo
   TrackerCounters counters{};
   // Window of 4 scans; both tracks exist from scan 0 and reach 0.99 only on
   // the newest scan (3). Track 1 is held to the in-clutter threshold.
-  tracks[0].start(1, 0, 0.5);
-  tracks[1].start(2, 0, 0.5);
-  tracks[1].predictive_evidence = true;
+  start_plain_and_held(tracks);
   for (auto* t : {&tracks[0], &tracks[1]}) {
     for (std::size_t k = 0; k < 3; ++k) t->vis[k] = 0.5;
     t->vis[3] = 0.995;
