@@ -93,9 +93,13 @@ mptrack_status c_api_scene_run(c_api_tracker which, c_api_record* records, size_
   mptrack_status s;
   uint32_t k;
   *num_records = 0;
-  if (which == kCApiMfbp) {
+  if (which == kCApiMfbp || which == kCApiMfbpEveryScan) {
     mptrack_mfbp_params p;
-    mptrack_mfbp_default_params(&p);
+    if (which == kCApiMfbp) {
+      mptrack_mfbp_default_params(&p);
+    } else {
+      mptrack_mfbp_every_scan_params(&p);
+    }
     s = mptrack_mfbp_init(&g_mfbp_memory, sizeof g_mfbp_memory, &p, &t, NULL);
   } else if (which == kCApiGnn) {
     mptrack_gnn_params p;

@@ -40,7 +40,8 @@ typedef enum c_api_tracker {
   kCApiGnn = 1,
   kCApiGmPhd = 2,
   kCApiGmCphd = 3,
-  kCApiCbMember = 4
+  kCApiCbMember = 4,
+  kCApiMfbpEveryScan = 5 /* MF-BP with mptrack_mfbp_every_scan_params */
 } c_api_tracker;
 
 /* Runs the scene through the C API (static memory), flushes, and records

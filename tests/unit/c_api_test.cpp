@@ -119,6 +119,24 @@ TEST_CASE("MF-BP through the C API reports the C++ tracker's tracks bit for bit"
   CHECK(c.tracks_born == tracker.counters().tracks_born);
 }
 
+TEST_CASE("MF-BP with mptrack_mfbp_every_scan_params reports every_scan_smoother_params' tracks bit for bit") {
+  mptrack_mfbp_params d, e;
+  mptrack_mfbp_default_params(&d);
+  mptrack_mfbp_every_scan_params(&e);
+  CHECK(d.slide == 3u);
+  CHECK(d.confirm_lookahead_in_clutter == 0u);
+  CHECK(e.slide == 1u);
+  CHECK(e.confirm_lookahead_in_clutter == 2u);
+  mptrack_counters c{};
+  const std::vector<c_api_record> from_c = run_c(kCApiMfbpEveryScan, c);
+  static mptrack::MfbpTracker<float, mptrack::DefaultCaps> tracker;
+  REQUIRE(tracker.init(mptrack::every_scan_smoother_params<float>()) == mptrack::Status::kOk);
+  const std::vector<c_api_record> from_cpp = run_cpp(tracker);
+  CHECK(confirmed_ids(from_c) == 2);
+  require_bit_identical(from_c, from_cpp);
+  CHECK(c.tracks_born == tracker.counters().tracks_born);
+}
+
 TEST_CASE("GNN through the C API reports the C++ tracker's tracks bit for bit") {
   mptrack_counters c{};
   const std::vector<c_api_record> from_c = run_c(kCApiGnn, c);

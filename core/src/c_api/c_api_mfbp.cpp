@@ -27,6 +27,7 @@ bool params_from_c(const mptrack_mfbp_params& c, Params& p) {
   p.p_birth = c.p_birth;
   p.window_length = c.window_length;
   p.slide = c.slide;
+  p.confirm_lookahead_in_clutter = c.confirm_lookahead_in_clutter;
   p.uniform_rate_per_scan = c.uniform_rate_per_scan;
   p.v_max_x_mps = c.v_max_x_mps;
   p.v_max_y_mps = c.v_max_y_mps;
@@ -44,13 +45,9 @@ static_assert(sizeof(mptrack::capi::Slot<Tracker>) <= sizeof(mptrack_mfbp_storag
               "raise MPTRACK_MFBP_STORAGE_BYTES (mptrack_c.h)");
 static_assert(alignof(mptrack::capi::Slot<Tracker>) <= alignof(mptrack_mfbp_storage),
               "mptrack_mfbp_storage must be aligned for the tracker");
-}  // namespace
 
-extern "C" {
-
-void mptrack_mfbp_default_params(mptrack_mfbp_params* c) {
-  if (c == nullptr) return;
-  const Params p{};
+/// The C block of p (the inverse of params_from_c on the fields it holds).
+void params_to_c(const Params& p, mptrack_mfbp_params* c) {
   mptrack::capi::region_to_c(p.region, c->region);
   mptrack::capi::noise_to_c(p.noise, c->noise);
   c->scan_period_s = p.scan_period_s;
@@ -65,12 +62,26 @@ void mptrack_mfbp_default_params(mptrack_mfbp_params* c) {
   c->p_birth = p.p_birth;
   c->window_length = static_cast<uint32_t>(p.window_length);
   c->slide = static_cast<uint32_t>(p.slide);
+  c->confirm_lookahead_in_clutter = static_cast<uint32_t>(p.confirm_lookahead_in_clutter);
   c->clutter_mode = MPTRACK_MFBP_CLUTTER_ESTIMATED_MAP;  // ClutterMode::kEstimatedMap, Params' default
   c->uniform_rate_per_scan = p.uniform_rate_per_scan;
   c->v_max_x_mps = p.v_max_x_mps;
   c->v_max_y_mps = p.v_max_y_mps;
   c->confirm_threshold = p.confirm_threshold;
   c->delete_threshold = p.delete_threshold;
+}
+}  // namespace
+
+extern "C" {
+
+void mptrack_mfbp_default_params(mptrack_mfbp_params* c) {
+  if (c == nullptr) return;
+  params_to_c(Params{}, c);
+}
+
+void mptrack_mfbp_every_scan_params(mptrack_mfbp_params* c) {
+  if (c == nullptr) return;
+  params_to_c(mptrack::every_scan_smoother_params<float>(), c);
 }
 
 size_t mptrack_mfbp_size(void) { return sizeof(mptrack::capi::Slot<Tracker>); }

@@ -180,6 +180,8 @@ typedef struct mptrack_mfbp_params {
   float p_birth;              /* P(visible at k | invisible at k-1) [-] */
   uint32_t window_length;     /* smoothing window K [scans], <= 7; 1 = online filter */
   uint32_t slide;             /* scans finalised per window, 1 <= slide <= window_length */
+  uint32_t confirm_lookahead_in_clutter; /* later window scans a young track in weaker clutter
+                                            needs on its confirming scan (0 = any scan) */
   mptrack_mfbp_clutter_mode clutter_mode;
   float uniform_rate_per_scan;  /* known clutter rate (KNOWN_RATE_UNIFORM) [-] */
   float v_max_x_mps;          /* two-point birth gate [m/s] */
@@ -189,6 +191,11 @@ typedef struct mptrack_mfbp_params {
 } mptrack_mfbp_params;
 
 void mptrack_mfbp_default_params(mptrack_mfbp_params* params);
+/* The "mfbp-s1" configuration (every_scan_smoother_params): the defaults with
+ * a window processed every scan (slide 1) and confirm_lookahead_in_clutter 2:
+ * births inside clutter are confirmed ~3 scans sooner for ~2.5x the mean
+ * compute (docs/algorithms/mfbp.md, Window schedule). */
+void mptrack_mfbp_every_scan_params(mptrack_mfbp_params* params);
 size_t mptrack_mfbp_size(void);
 size_t mptrack_mfbp_alignment(void);
 /* Constructs an MF-BP tracker in memory (size >= mptrack_mfbp_size(),
