@@ -1,7 +1,8 @@
 // libFuzzer harness: MF-BP measurement ingest and window processing on
 // arbitrary scans (docs/reliability.md). Small caps keep one execution in
 // the millisecond range; the first byte picks the online filter (K = 1),
-// a short window (K = 3, slide 1) or the paper's smoother (K = 7, slide 3).
+// a short window (K = 3, slide 1), the paper's smoother (K = 7, slide 3) or,
+// with bit 0x40, mfbp-s1's (K = 7, slide 1, confirm_lookahead_in_clutter 2).
 #include <cstddef>
 #include <cstdint>
 
@@ -30,6 +31,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 0: p.window_length = 1; p.slide = 1; break;
     case 1: p.window_length = 3; p.slide = 1; break;
     default: p.window_length = 7; p.slide = 3; break;
+  }
+  if (p.window_length == 7 && (cfg & 0x40u) != 0) {
+    p.slide = 1;
+    p.confirm_lookahead_in_clutter = 2;
   }
   p.amplitude.use_amplitude = (cfg & 0x10u) == 0;
   p.clutter_mode = (cfg & 0x20u) == 0 ? mptrack::ClutterMode::kEstimate
