@@ -13,7 +13,10 @@
 #include "mptrack/gnn/gnn_tracker.h"
 #include "mptrack/mfbp/mfbp_tracker.h"
 #include "mptrack/phd/phd_filter.h"
+#include "mptrack/sbl/sbl_params.h"
+#include "mptrack/seaclutter/sea_detector_params.h"
 #include "mptrack/tracker_params.h"
+#include "mptrack/vmp/vmp_params.h"
 
 using mptrack::ParamError;
 using mptrack::Status;
@@ -222,4 +225,40 @@ TEST_CASE("front end validate: fields, CFAR fields and the radar caps are named"
   p = mptrack::frontend::FrontEndParams{};
   p.carrier_hz = -1.0;
   CHECK(same(field_of(v), "carrier_hz"));
+}
+
+TEST_CASE("carrier_hz is a radar carrier, 1 MHz to 10 THz, in every struct that holds one (F15)") {
+  mptrack::frontend::FrontEndParams fe;
+  mptrack::VmpParams vmp;
+  mptrack::SblParams sbl;
+  mptrack::seaclutter::SeaDetectorParams sea;
+  auto refused = [](auto p, double f) {
+    p.carrier_hz = f;
+    ParamError e{};
+    return p.validate(&e) == Status::kInvalidArgument && std::strcmp(e.field, "carrier_hz") == 0;
+  };
+  for (double f : {1e-40, 0.999e6, 1.001e13}) {
+    CHECK(refused(fe, f));  // 1e-40: the fuzz_params finding, +-Inf Doppler in the detections
+    CHECK(refused(vmp, f));
+    CHECK(refused(sbl, f));
+    CHECK(refused(sea, f));
+  }
+  for (double f : {1e6, 10e9, 1e13}) {
+    CHECK_FALSE(refused(fe, f));
+    CHECK_FALSE(refused(vmp, f));
+    CHECK_FALSE(refused(sbl, f));
+    CHECK_FALSE(refused(sea, f));
+  }
+}
+
+TEST_CASE("front end validate: chirp_repetition_s within 1 ns .. 1 s (F15)") {
+  mptrack::frontend::FrontEndParams p;
+  ParamError e{};
+  p.chirp_repetition_s = 1e-40;
+  CHECK(p.validate(&e) == Status::kInvalidArgument);
+  CHECK(std::strcmp(e.field, "chirp_repetition_s") == 0);
+  p.chirp_repetition_s = 2.0;
+  CHECK(p.validate(&e) == Status::kInvalidArgument);
+  p.chirp_repetition_s = 1e-9;
+  CHECK(p.validate() == Status::kOk);
 }

@@ -106,6 +106,17 @@ constexpr CheckResult check_above(X x, L lo, const char* limit = "") {
 }
 
 /// A condition that must hold (no figures to report: ParamError::rule says which).
+/// A radar carrier frequency f_c [Hz], 1 MHz (HF) to 10 THz. The bounds are
+/// physical, not numerical comfort: with f_c = 1e-40 Hz, lambda = c / f_c and
+/// every Doppler velocity overflowed to +-Inf in the front end's detections
+/// (docs/reliability.md F15).
+inline constexpr double kMinCarrierHz = 1e6;
+inline constexpr double kMaxCarrierHz = 1e13;
+template <class X>
+constexpr CheckResult check_carrier_hz(X f) {
+  return check_range(f, kMinCarrierHz, kMaxCarrierHz);
+}
+
 constexpr CheckResult check(bool condition) {
   CheckResult r;
   r.status = condition ? Status::kOk : Status::kInvalidArgument;

@@ -116,11 +116,11 @@ struct FrontEndParams {
   /// range gate, CFAR window, max_detections) is FrontEnd::validate()'s.
   /// On failure names the field in *where (validate.h).
   Status validate(ParamError* where = nullptr) const {
-    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_positive(carrier_hz));
+    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_carrier_hz(carrier_hz));
     MPTRACK_CHECK_PARAM(where, "bandwidth_hz", check_positive(bandwidth_hz));
     MPTRACK_CHECK_PARAM(where, "chirp_duration_s", check_positive(chirp_duration_s));
     MPTRACK_CHECK_PARAM(where, "sample_rate_hz", check_positive(sample_rate_hz));
-    MPTRACK_CHECK_PARAM(where, "chirp_repetition_s", check_positive(chirp_repetition_s));
+    MPTRACK_CHECK_PARAM(where, "chirp_repetition_s", check_range(chirp_repetition_s, 1e-9, 1.0));  // F15: 1 ns .. 1 s
     MPTRACK_CHECK_PARAM(where, "element_spacing_wavelengths", check_range(element_spacing_wavelengths, 1e-3, 1.0));
     MPTRACK_CHECK_PARAM(where, "range_window", check(is_valid_window(range_window)));
     MPTRACK_CHECK_PARAM(where, "doppler_window", check(is_valid_window(doppler_window)));

@@ -66,7 +66,7 @@ struct SblParams {
   /// Every field on its own; the fit to the caps is SblDetector::validate()'s.
   /// On failure names the field in *where (validate.h).
   Status validate(ParamError* where = nullptr) const {
-    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_positive(carrier_hz));
+    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_carrier_hz(carrier_hz));
     MPTRACK_CHECK_PARAM(where, "bandwidth_hz", check_positive(bandwidth_hz));
     MPTRACK_CHECK_PARAM(where, "chirp_duration_s", check_positive(chirp_duration_s));
     MPTRACK_CHECK_PARAM(where, "sample_rate_hz", check_positive(sample_rate_hz));

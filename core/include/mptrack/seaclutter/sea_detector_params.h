@@ -30,7 +30,7 @@ struct SeaDetectorParams {
   double patch_span_db = 60.0;    ///< dB covered by codes 0..255 (0.235 dB per code)
 
   Status validate(ParamError* where = nullptr) const {
-    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_positive(carrier_hz));
+    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_carrier_hz(carrier_hz));
     MPTRACK_CHECK_PARAM(where, "prf_hz", check_positive(prf_hz));
     MPTRACK_CHECK_PARAM(where, "range_bin_m", check_positive(range_bin_m));
     MPTRACK_CHECK_PARAM(where, "doppler_window", check(frontend::is_valid_window(doppler_window)));

@@ -64,7 +64,7 @@ struct VmpParams {
 
   /// Every field on its own; the caps fit is VmpTracker::validate()'s.
   Status validate(ParamError* where = nullptr) const {
-    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_positive(carrier_hz));
+    MPTRACK_CHECK_PARAM(where, "carrier_hz", check_carrier_hz(carrier_hz));
     MPTRACK_CHECK_PARAM(where, "bandwidth_hz", check_positive(bandwidth_hz));
     MPTRACK_CHECK_PARAM(where, "chirp_duration_s", check_positive(chirp_duration_s));
     MPTRACK_CHECK_PARAM(where, "sample_rate_hz", check_positive(sample_rate_hz));
