@@ -31,30 +31,33 @@
 
 namespace mptrack::mfbp {
 
-/// b_s(1) a tentative track needs (docs/algorithms/mfbp.md §Birth, young
-/// tracks inside weaker clutter): confirm_threshold_in_clutter once it has
+/// Does a tentative track need confirm_threshold_in_clutter (docs/algorithms/
+/// mfbp.md §Birth, young tracks inside weaker clutter)? Yes once it has
 /// scored measurements with the predictive density (predictive_evidence) or,
 /// in the online filter, been predicted inside any Gaussian component
-/// (predicted_in_component), confirm_threshold otherwise. The predictive
+/// (predicted_in_component), and the in-clutter threshold is the higher. The predictive
 /// density lets a loose young track take a clutter point near its prediction
 /// at fair odds, so one or two lucky scans would confirm it at 0.75; a target
 /// keeps b_s near 1 scan after scan as the track tightens, clutter does not.
 template <class T, class Caps>
-T confirmation_threshold(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
+bool held_to_clutter_threshold(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
   return p.tentative_predictive_in_clutter && (t.predictive_evidence || t.predicted_in_component) &&
-                 p.confirm_threshold_in_clutter > p.confirm_threshold
-             ? p.confirm_threshold_in_clutter
-             : p.confirm_threshold;
+         p.confirm_threshold_in_clutter > p.confirm_threshold;
+}
+
+/// held_to_clutter_threshold's threshold, or confirm_threshold.
+template <class T, class Caps>
+T confirmation_threshold(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
+  return held_to_clutter_threshold(t, p) ? p.confirm_threshold_in_clutter : p.confirm_threshold;
 }
 
 /// Finalised scans a tentative track may stay unconfirmed: longer for one
-/// that has to reach confirm_threshold_in_clutter (same condition as
-/// confirmation_threshold): it takes its target's detections at fair odds
+/// held_to_clutter_threshold: it takes its target's detections at fair odds
 /// against the component only once it has tightened, and at the plain
 /// timeout it died before reaching 0.99 (docs/algorithms/mfbp.md §Birth).
 template <class T, class Caps>
 std::size_t tentative_timeout(const TrackSlot<T, Caps>& t, const MfbpParams<T>& p) {
-  return confirmation_threshold(t, p) > p.confirm_threshold &&
+  return held_to_clutter_threshold(t, p) &&
                  p.tentative_timeout_in_clutter_scans > p.tentative_timeout_scans
              ? p.tentative_timeout_in_clutter_scans
              : p.tentative_timeout_scans;
@@ -71,7 +74,7 @@ std::size_t tentative_timeout(const TrackSlot<T, Caps>& t, const MfbpParams<T>& 
 template <class T, class Caps>
 bool filter_score_confirms(TrackSlot<T, Caps>& t, std::size_t n, const MfbpParams<T>& p) {
   if (p.window_length != 1 || n != 1 || !(p.filter_confirm_score_in_clutter > T(0)) ||
-      !(confirmation_threshold(t, p) > p.confirm_threshold)) {
+      !held_to_clutter_threshold(t, p)) {
     return false;
   }
   if (t.participates(0) && t.xi1[0] > T(0) && t.xi0[0] > T(0)) t.score += dmath::dlog(t.xi1[0] / t.xi0[0]);
@@ -101,8 +104,9 @@ void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, std::size_t look
       ++counters.tracks_confirmed;
       continue;
     }
-    const T threshold = confirmation_threshold(t, p);
-    const std::size_t last = threshold > p.confirm_threshold ? n - lookahead : n;
+    const bool in_clutter = held_to_clutter_threshold(t, p);
+    const T threshold = in_clutter ? p.confirm_threshold_in_clutter : p.confirm_threshold;
+    const std::size_t last = in_clutter ? n - lookahead : n;
     for (std::size_t k = t.first; k < last; ++k) {
       if (t.vis[k] >= threshold) {
         t.confirmed = true;
