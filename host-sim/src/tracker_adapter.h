@@ -83,6 +83,11 @@ class TrackerAdapter {
     return Status::kInvalidArgument;
   }
   virtual TrackerCounters counters() const = 0;
+  /// After step(): the tracker's provisional (lag-0) estimate of the scan it
+  /// just consumed, when it hands one out (MF-BP's smoother:
+  /// MfbpTracker::provisional(), docs/algorithms/mfbp.md §Provisional
+  /// output). False for trackers whose outputs have no lag.
+  virtual bool provisional(EstimateOut& /*out*/) const { return false; }
 };
 
 /// Converts a core ScanEstimate into the harness form.

@@ -149,6 +149,7 @@ void add_track_scores_json(const Summary& s, nlohmann::ordered_json& j) {
                        {"tpd", t.tpd()},
                        {"ttl_scans", t.ttl_scans()},
                        {"report_delay_scans", t.report_delay_scans()},
+                       {"realtime_delay_scans", t.realtime_delay_scans()},
                        {"targets", t.targets},
                        {"targets_never_tracked", t.targets - t.targets_tracked},
                        {"aee_range_m", t.aee_range_m()},
@@ -169,6 +170,7 @@ nlohmann::ordered_json track_scores_by_target_json(const TrackScoreTotals& t) {
   for (const auto& [id, d] : t.delay_by_target) {
     out[std::to_string(id)] = {{"ttl_scans", t.ttl_scans_of(id)},
                                {"report_delay_scans", t.report_delay_scans_of(id)},
+                               {"realtime_delay_scans", t.realtime_delay_scans_of(id)},
                                {"never_tracked", d.never_tracked},
                                {"coverage_from_birth5", t.settled_coverage_of(id)}};
   }

@@ -441,3 +441,40 @@ TEST_CASE("track scoring: an estimate without a recorded report scan counts as r
   CHECK(t.report_delay_scans() == doctest::Approx(t.ttl_scans()));
   CHECK(t.report_delay_scans() == doctest::Approx(1.0));
 }
+
+TEST_CASE("track scoring: the real-time delay is the first scan whose own estimate covers the target") {
+  // Final estimates cover target 1 (born at scan 1) from scan 3: TTL 2. The
+  // real-time stream (each step's estimate of its own scan) first shows
+  // track 7 on it at scan 6, so the real-time delay is 6 - 1 = 5.
+  Run r(8);
+  std::vector<EstimateOut> realtime(8);
+  for (std::uint32_t k = 1; k <= 8; ++k) {
+    r.target(k, 1, 1000.0, 0.0);
+    realtime[k - 1].scan = k;
+  }
+  for (std::uint32_t k = 3; k <= 8; ++k) r.track(k, 7, 1001.0, 0.0);
+  for (std::uint32_t k = 6; k <= 8; ++k) realtime[k - 1].tracks.push_back(track_at(7, 1002.0, 0.0));
+  TrackScoreTotals t;
+  t.add(score_run(r.scans, r.est, gate(50.0), &realtime));
+  CHECK(t.ttl_scans() == doctest::Approx(2.0));
+  CHECK(t.realtime_delay_scans() == doctest::Approx(5.0));
+  CHECK(t.realtime_delay_scans_of(1) == doctest::Approx(5.0));
+}
+
+TEST_CASE("track scoring: a real-time track that no final estimate scores as valid does not count") {
+  // Track 8 sits on the target in real time from scan 2 (nearer than track
+  // 7 from scan 4) but never appears in the final estimates (deleted before
+  // its scans were final): the first real-time coverage is track 7's, at scan 4.
+  Run r(6);
+  std::vector<EstimateOut> realtime(6);
+  for (std::uint32_t k = 1; k <= 6; ++k) {
+    r.target(k, 1, 1000.0, 0.0);
+    r.track(k, 7, 1001.0, 0.0);
+    realtime[k - 1].scan = k;
+    if (k >= 2) realtime[k - 1].tracks.push_back(track_at(8, 1000.5, 0.0));  // 0.5 m off, track 7 1 m
+    if (k >= 4) realtime[k - 1].tracks.push_back(track_at(7, 1001.0, 0.0));
+  }
+  const RunTrackScore s = score_run(r.scans, r.est, gate(50.0), &realtime);
+  REQUIRE(s.targets.size() == 1);
+  CHECK(s.targets[0].first_realtime_scan == 4);
+}

@@ -118,7 +118,7 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   sum_.ospa_mahalanobis_per_run.push_back(run_mean(run_ospa_mahalanobis));
   tracks_found_ += static_cast<double>(found.size());
   add_object_errors(scans, metrics);
-  sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring));
+  sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring, &rec.realtime_by_scan));
 }
 
 void Aggregator::add_object_errors(const std::vector<scenario::SimScan>& scans,

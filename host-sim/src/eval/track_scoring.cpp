@@ -216,10 +216,39 @@ std::uint32_t count_false_in_clutter(const std::vector<EstimateOut>& by_scan, st
   return count;
 }
 
+/// TargetScore::first_realtime_scan of every followed target: the first
+/// scan of `realtime` on which a confirmed track that the final estimates
+/// score as valid (classify_tracks, as coverage requires) is assigned to it
+/// (match_scan among those tracks only); a track never handed out final, or
+/// false, takes no part.
+void mark_first_realtime(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& realtime,
+                         const TrackScoringParams& params, const std::map<std::uint32_t, bool>& valid,
+                         ScoringSolver& solver, const std::map<std::uint32_t, std::size_t>& index,
+                         std::vector<TargetFollower>& followers) {
+  const double all = -std::numeric_limits<double>::infinity();
+  const std::size_t n = std::min(scans.size(), realtime.size());
+  ScanAssignment previous;
+  EstimateOut scored;
+  for (std::size_t i = 0; i < n; ++i) {
+    scored.tracks.clear();
+    for (const TrackOut& t : realtime[i].tracks) {
+      const auto v = valid.find(t.id);
+      if (v != valid.end() && v->second) scored.tracks.push_back(t);
+    }
+    previous = match_scan(scans[i], scored, params.gate_m, all, solver, params.keep_pairs ? &previous : nullptr);
+    for (const auto& [track_id, target_id] : previous) {
+      const auto f = index.find(target_id);
+      if (target_id == kNoTarget || f == index.end()) continue;
+      TargetScore& score = followers[f->second].score;
+      if (score.first_realtime_scan < 0) score.first_realtime_scan = static_cast<std::int32_t>(i + 1);
+    }
+  }
+}
+
 }  // namespace
 
 RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
-                        const TrackScoringParams& params) {
+                        const TrackScoringParams& params, const std::vector<EstimateOut>* realtime) {
   const std::size_t n = std::min(scans.size(), by_scan.size());
   auto solver = std::make_unique<ScoringSolver>();  // a 256 x 256 cost matrix: heap, not stack
   std::vector<ScanAssignment> per_scan(n);
@@ -256,6 +285,7 @@ RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::
       followers[index[truth.target_id]].scan(k, reported_after, truth, covering, per_scan[i]);
     }
   }
+  if (realtime != nullptr) mark_first_realtime(scans, *realtime, params, valid, *solver, index, followers);
   for (const TargetFollower& f : followers) run.targets.push_back(f.score);
   const AmotaScore amota = run_amota(scans, by_scan, AmotaParams{params.gate_m, kAmotaRecallPoints}, *solver);
   run.amota = amota.normalised;
@@ -285,6 +315,13 @@ void TrackScoreTotals::add(const RunTrackScore& run) {
       delay.report_latency_scans += reported;
     } else {
       ++delay.never_tracked;
+    }
+    if (t.first_realtime_scan >= 0) {
+      const std::uint64_t realtime = static_cast<std::uint64_t>(t.first_realtime_scan) - t.birth_scan;
+      ++realtime_tracked;
+      realtime_latency_scans += realtime;
+      ++delay.realtime_tracked;
+      delay.realtime_latency_scans += realtime;
     }
     id_switches += t.id_switches;
     fragmentations += t.fragmentations;
@@ -320,6 +357,9 @@ double TrackScoreTotals::ttl_scans() const { return ratio(static_cast<double>(la
 double TrackScoreTotals::report_delay_scans() const {
   return ratio(static_cast<double>(report_latency_scans), targets_tracked);
 }
+double TrackScoreTotals::realtime_delay_scans() const {
+  return ratio(static_cast<double>(realtime_latency_scans), realtime_tracked);
+}
 double TrackScoreTotals::aee_range_m() const { return ratio(abs_range_err_sum_m, covered_scans); }
 double TrackScoreTotals::aee_bearing_rad() const { return ratio(abs_bearing_err_sum_rad, covered_scans); }
 double TrackScoreTotals::per_target(std::uint64_t count) const { return ratio(static_cast<double>(count), targets); }
@@ -342,6 +382,12 @@ double TrackScoreTotals::report_delay_scans_of(std::uint32_t target_id) const {
   const auto it = delay_by_target.find(target_id);
   return it == delay_by_target.end() ? 0.0
                                      : ratio(static_cast<double>(it->second.report_latency_scans), it->second.tracked);
+}
+double TrackScoreTotals::realtime_delay_scans_of(std::uint32_t target_id) const {
+  const auto it = delay_by_target.find(target_id);
+  return it == delay_by_target.end() ? 0.0
+                                     : ratio(static_cast<double>(it->second.realtime_latency_scans),
+                                             it->second.realtime_tracked);
 }
 double TrackScoreTotals::settled_coverage_of(std::uint32_t target_id) const {
   const auto it = settled_by_target.find(target_id);

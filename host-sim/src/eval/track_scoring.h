@@ -71,6 +71,10 @@ struct TargetScore {
   /// The scan after which the tracker first handed out a covering track
   /// (EstimateOut::reported_after_scan of the covered scans, earliest); -1: never.
   std::int32_t first_reported_scan = -1;
+  /// The first scan k whose own step() handed out, for scan k, a confirmed
+  /// track assigned to it (RunRecord::realtime_by_scan: a filter's estimate
+  /// or a smoother's provisional one); -1: never, or no such stream scored.
+  std::int32_t first_realtime_scan = -1;
   std::uint32_t id_switches = 0;     ///< its assigned track id changed (from the last one it had)
   std::uint32_t fragmentations = 0;  ///< coverage resumed after an interruption
   std::uint32_t track_breaks = 0;    ///< id changed and the previous track no longer existed
@@ -117,8 +121,10 @@ ScanAssignment match_scan(const scenario::SimScan& scan, const EstimateOut& est,
 /// distance gated at params.gate_m, keeping the previous scan's pairs that
 /// are still within the gate when params.keep_pairs. Throws std::runtime_error if a scan has
 /// more than 256 tracks or targets.
+/// realtime (optional, index scan-1): the estimates each step handed out
+/// for its own scan, which set TargetScore::first_realtime_scan.
 RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
-                        const TrackScoringParams& params);
+                        const TrackScoringParams& params, const std::vector<EstimateOut>* realtime = nullptr);
 
 /// Totals over runs; the means scripts read from summary.json.
 struct TrackScoreTotals {
@@ -127,6 +133,8 @@ struct TrackScoreTotals {
   std::uint64_t alive_scans = 0, covered_scans = 0;
   std::uint64_t latency_scans = 0;                 ///< sum of first_covered - birth over tracked targets
   std::uint64_t report_latency_scans = 0;          ///< sum of first_reported - birth over tracked targets
+  std::uint64_t realtime_latency_scans = 0;        ///< sum of first_realtime - birth over realtime_tracked
+  std::uint64_t realtime_tracked = 0;              ///< (run, target) pairs with a first_realtime_scan
   std::uint64_t valid_tracks = 0, false_tracks = 0, targets_with_valid_track = 0;
   std::uint64_t false_tracks_in_clutter = 0;
   std::uint64_t id_switches = 0, fragmentations = 0, track_breaks = 0;
@@ -143,6 +151,7 @@ struct TrackScoreTotals {
   /// tracked in, and the runs it never was (issue 18: a birth inside clutter).
   struct TargetDelay {
     std::uint64_t latency_scans = 0, report_latency_scans = 0, tracked = 0, never_tracked = 0;
+    std::uint64_t realtime_latency_scans = 0, realtime_tracked = 0;
   };
   std::map<std::uint32_t, TargetDelay> delay_by_target;
 
@@ -155,6 +164,10 @@ struct TrackScoreTotals {
   /// Mean scans from birth to the scan after which the first covering track
   /// was handed out: ttl_scans() plus the output lag (tracked targets).
   double report_delay_scans() const;
+  /// Mean scans from birth to the first scan whose own step() handed out a
+  /// confirmed track on the target (first_realtime_scan; targets it happened for):
+  /// ttl_scans() for a filter, a smoother's delay through its provisional output.
+  double realtime_delay_scans() const;
   double aee_range_m() const;        ///< mean |ground range error| over covered target-scans [m]
   double aee_bearing_rad() const;    ///< mean |bearing error| over covered target-scans [rad]
   double per_target(std::uint64_t count) const;  ///< count / targets (0 if none)
@@ -166,6 +179,7 @@ struct TrackScoreTotals {
   double settled_coverage_of(std::uint32_t target_id) const;  ///< the same for one target id over runs
   double ttl_scans_of(std::uint32_t target_id) const;  ///< ttl_scans() of one target id over runs (0 if never tracked)
   double report_delay_scans_of(std::uint32_t target_id) const;  ///< the same for report_delay_scans()
+  double realtime_delay_scans_of(std::uint32_t target_id) const;  ///< the same for realtime_delay_scans()
 };
 
 }  // namespace mptrack::sim

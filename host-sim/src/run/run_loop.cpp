@@ -67,12 +67,33 @@ void check_loop_config(const LoopConfig& cfg) {
   }
 }
 
+namespace {
+
+/// The estimate of the step's own scan (tracker numbering: the step count)
+/// that a step handed out, final (among finals[from..]) or provisional, appended to realtime.
+void keep_realtime(const std::vector<EstimateOut>& finals, std::size_t from, const TrackerAdapter& tracker,
+                   std::uint32_t step_scan, std::uint32_t source_scan, std::vector<EstimateOut>& realtime) {
+  for (std::size_t i = from; i < finals.size(); ++i) {
+    if (finals[i].scan == step_scan) {
+      realtime.push_back(finals[i]);
+      return;
+    }
+  }
+  EstimateOut p;
+  if (!tracker.provisional(p) || p.scan != step_scan) return;
+  p.reported_after_scan = source_scan;
+  realtime.push_back(std::move(p));
+}
+
+}  // namespace
+
 RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t run, Progress* progress) {
   const std::uint32_t n = source.num_scans();
   RunRecord rec;
   rec.run = run;
   rec.latency_us.assign(n, 0.0);
   std::vector<EstimateOut> finals;
+  std::vector<EstimateOut> realtime;  // at most one per step: that step's own scan (RunRecord::realtime_by_scan)
   const FrameInput input = tracker.frame_input();
   // A step()/flush() during which the mixture truncation count grew (RunRecord::steps_truncating).
   std::uint64_t truncated = tracker.counters().mixture_truncated;
@@ -92,6 +113,7 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
     const Status st = frame != nullptr ? tracker.step_frame(*frame, s, finals) : tracker.step(s, finals);
     const auto t1 = std::chrono::steady_clock::now();
     stamp(before, s.scan);
+    keep_realtime(finals, before, tracker, static_cast<std::uint32_t>(rec.delivered.size()), s.scan, realtime);
     count_truncation();
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     rec.latency_us[s.scan - 1] = us;
@@ -105,6 +127,7 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
   count_truncation();
   rec.counters = tracker.counters();
   rec.by_scan = estimates_by_scan(finals, rec.delivered, n);
+  rec.realtime_by_scan = estimates_by_scan(realtime, rec.delivered, n);
   return rec;
 }
 

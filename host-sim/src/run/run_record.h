@@ -15,6 +15,11 @@ namespace mptrack::sim {
 struct RunRecord {
   std::uint32_t run = 0;                 ///< 0-based run number
   std::vector<EstimateOut> by_scan;      ///< index scan-1; an empty estimate where nothing was finalised
+  /// index scan-1: what the step() that consumed scan k handed out for scan k
+  /// itself, its final estimate (a filter) or its provisional one (a
+  /// smoother; TrackerAdapter::provisional); empty where it handed out
+  /// neither (a smoother's step that only stored its scan).
+  std::vector<EstimateOut> realtime_by_scan;
   std::vector<double> latency_us;        ///< wall time of the step() that consumed scan k (index k-1); 0 if not delivered
   std::vector<std::uint32_t> delivered;  ///< scans handed to the tracker, in order: step i consumed scan delivered[i]
   std::vector<Status> statuses;          ///< every step() status, then flush()'s

@@ -5,6 +5,8 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "mptrack/scenario/generator.h"
@@ -14,6 +16,14 @@
 #include "tracker_adapter.h"
 
 namespace mptrack::sim {
+
+/// Does Tracker hand out a provisional estimate (has_provisional(), provisional())?
+template <class Tracker, class = void>
+struct HasProvisional : std::false_type {};
+template <class Tracker>
+struct HasProvisional<Tracker, std::void_t<decltype(std::declval<const Tracker&>().has_provisional()),
+                                           decltype(std::declval<const Tracker&>().provisional())>>
+    : std::true_type {};
 
 template <class Tracker>
 class CoreTrackerAdapter : public TrackerAdapter {
@@ -43,6 +53,16 @@ class CoreTrackerAdapter : public TrackerAdapter {
     TrackerCounters c = tracker_->counters();
     c.measurements_over_cap += truncated_;
     return c;
+  }
+
+  bool provisional(EstimateOut& out) const override {
+    if constexpr (HasProvisional<Tracker>::value) {
+      if (!tracker_->has_provisional()) return false;
+      out = to_estimate_out(tracker_->provisional());
+      return true;
+    } else {
+      return false;
+    }
   }
 
  protected:

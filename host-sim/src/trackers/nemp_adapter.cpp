@@ -131,6 +131,12 @@ class NempAdapter final : public TrackerAdapter {
 
   TrackerCounters counters() const override { return tracker_->counters(); }
 
+  bool provisional(EstimateOut& out) const override {
+    if (!tracker_->has_provisional()) return false;
+    out = to_estimate_out(tracker_->provisional());
+    return true;
+  }
+
  private:
   /// mfbp-nn: keeps the detections the classifier calls targets (w >= 0.5
   /// with an uninformative tracker belief), in order.

@@ -140,7 +140,7 @@ typedef struct mptrack_tracker mptrack_tracker;
  *   static mptrack_mfbp_storage g_mem;
  *   mptrack_mfbp_init(&g_mem, sizeof g_mem, &params, &tracker, &err);
  * The union members give the alignment the trackers need (8 bytes). */
-#define MPTRACK_MFBP_STORAGE_BYTES 348160u /* 340 KiB: MF-BP, DefaultCaps (336.0 KiB on x86-64) */
+#define MPTRACK_MFBP_STORAGE_BYTES 356352u /* 348 KiB: MF-BP, DefaultCaps (342.7 KiB on x86-64) */
 #define MPTRACK_GNN_STORAGE_BYTES 122880u  /* 120 KiB: GNN, DefaultCaps (~114 KiB) */
 typedef union mptrack_mfbp_storage {
   unsigned char bytes[MPTRACK_MFBP_STORAGE_BYTES];

@@ -141,6 +141,7 @@ class MfbpTracker {
     for (auto& c : clutter_.comps) c.alive = false;
     counters_ = TrackerCounters{};
     outputs_.clear();
+    has_provisional_ = false;
     store_.clear();
     next_track_id_ = 1;
     next_comp_id_ = 1;
@@ -192,6 +193,7 @@ class MfbpTracker {
  private:
   Status step_with(const ScanType& scan, const mfbp::ScanEvidence<kMaxMeas>* evidence) {
     outputs_.clear();  // tracker_contract.h rule 1: a refused scan finalises nothing
+    has_provisional_ = false;
     MPTRACK_TRY(clock_.admit(initialized_, scan.time_us, counters_));
     const std::uint64_t caps_before = total_cap_hits(counters_);
     if (clock_.gap_exceeded(scan.time_us)) {
@@ -209,7 +211,7 @@ class MfbpTracker {
       if (t.alive) t.open_scan(store_.n_win());
     }
     store_.push_window();
-    if (store_.n_win() >= params_.window_length) process_window(params_.slide);
+    if (store_.n_win() >= params_.window_length) process_window(params_.slide, /*provisional=*/true);
     return accepted_status(counters_, caps_before, partial);
   }
 
@@ -218,6 +220,7 @@ class MfbpTracker {
   Status flush() {
     if (!initialized_) return Status::kNotInitialized;
     outputs_.clear();
+    has_provisional_ = false;
     const std::uint64_t caps_before = total_cap_hits(counters_);
     MPTRACK_PROFILE_STEP(g_mfbp);
     if (store_.n_win() > 0) process_window(store_.n_win());
@@ -225,6 +228,17 @@ class MfbpTracker {
   }
 
   const OutputQueue& outputs() const { return outputs_; }
+  /// Provisional (lag-0) output (docs/algorithms/mfbp.md §Provisional
+  /// output): after a step() that processed a window without finalising its
+  /// newest scan, that scan's estimate as the window sees it now, every
+  /// confirmed track with the rules of outputs(). Later windows revise it;
+  /// outputs() hands out the final estimate of the same scan
+  /// window_length - slide scans later. None (has_provisional() false) after
+  /// a step() that only stored its scan (slide > 1), a refused scan,
+  /// flush(), or when every scan is finalised at once (the online filter,
+  /// whose outputs() have no lag). Valid until the next call.
+  bool has_provisional() const { return has_provisional_; }
+  const Estimate& provisional() const { return provisional_; }
   const TrackerCounters& counters() const { return counters_; }
   /// Loopy-BP runs and their total iterations since init() (diagnostics).
   std::uint64_t bp_runs() const { return assoc_stats_.bp_runs; }
@@ -251,9 +265,10 @@ class MfbpTracker {
   bool estimate_clutter() const { return mfbp::estimate_clutter(params_); }
 
   // ------------------------------------------------------------ window loop
-  void process_window(std::size_t finalize_count) {
+  void process_window(std::size_t finalize_count, bool provisional = false) {
     const std::size_t n = store_.n_win();
     if (finalize_count > n) finalize_count = n;
+    const std::uint64_t newest_index = finalized_ + n - 1;  // scan number of window scan n - 1
     mf_sweep(n);
     spawn_tracks(n);
     if (estimate_clutter() && params_.clutter_birth) {
@@ -279,6 +294,11 @@ class MfbpTracker {
     mfbp::manage_tracks(tracks_, clutter_, n, finalize_count, n > 0 ? store_.win(n - 1).time_us : 0u, params_,
                         counters_);
     if (estimate_clutter()) mfbp::manage_components(clutter_, finalize_count, params_, counters_);
+    if (provisional && finalize_count < n) {
+      mfbp::report_scan(provisional_, n - 1, newest_index, store_, tracks_, clutter_, params_,
+                        mfbp::ReportKind::kProvisional);
+      has_provisional_ = true;
+    }
     shift_window(finalize_count);
   }
 
@@ -352,6 +372,8 @@ class MfbpTracker {
   mfbp::TrackSpawner<T, Caps> track_spawner_{};
 
   OutputQueue outputs_{};
+  Estimate provisional_{};
+  bool has_provisional_ = false;
   TrackerCounters counters_{};
   mfbp::AssociationStats assoc_stats_{};
   std::uint32_t next_track_id_ = 1;

@@ -6,6 +6,9 @@
 // with known clutter, the given map.
 // One missed scan is tolerated before a confirmed track stops being reported
 // (report_existence_min; our choice, docs/algorithms/mfbp.md §Departures).
+// The same report of the window's newest scan, before it is final, is the
+// smoother's provisional (lag 0) output (docs/algorithms/mfbp.md §Provisional
+// output).
 #pragma once
 
 #include <cstddef>
@@ -20,14 +23,24 @@
 
 namespace mptrack::mfbp {
 
-/// Confirmed tracks on window scan k (updates each one's vis_emitted).
+/// A final report of scan k (report_scan) or the provisional one of the
+/// window's newest scan (report_provisional).
+enum class ReportKind { kFinal, kProvisional };
+
+/// Confirmed tracks on window scan k. A final report updates each one's
+/// vis_emitted, the b_s of its last final scan; a provisional one changes
+/// nothing and takes the b_s of window scan k - 1 as the previous scan's.
 template <class T, class Caps, class Estimate>
 void report_tracks(Estimate& est, std::size_t k, const ScanSlot<T, Caps>& s, TrackTable<T, Caps>& tracks,
-                   const MfbpParams<T>& p) {
+                   const MfbpParams<T>& p, ReportKind kind = ReportKind::kFinal) {
   for (auto& t : tracks) {
     if (!t.alive || k < t.first || !t.confirmed) continue;
-    const T vis_prev = t.vis_emitted;
-    t.vis_emitted = t.vis[k];
+    T vis_prev = t.vis_emitted;
+    if (kind == ReportKind::kFinal) {
+      t.vis_emitted = t.vis[k];
+    } else {
+      vis_prev = k > t.first ? t.vis[k - 1] : T(0);
+    }
     if (t.vis[k] < p.report_existence_min && vis_prev < p.report_existence_min) continue;
     TrackReport<T> r;
     r.id = t.id;
@@ -84,15 +97,17 @@ void report_clutter_beliefs(Estimate& est, ClutterReport<T> u, std::size_t k, co
 }
 
 /// Fills est (in place: a ScanEstimate is kilobytes, too big for the
-/// stack) for window scan k, finalised scan number scan_index.
+/// stack) for window scan k, scan number scan_index: finalised (kFinal) or
+/// the provisional estimate of the newest scan (kProvisional).
 template <class T, class Caps, class Estimate>
 void report_scan(Estimate& est, std::size_t k, std::uint64_t scan_index, const WindowStore<T, Caps>& store,
-                 TrackTable<T, Caps>& tracks, const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p) {
+                 TrackTable<T, Caps>& tracks, const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p,
+                 ReportKind kind = ReportKind::kFinal) {
   est.tracks.clear();
   est.clutter.clear();
   est.time_us = store.win(k).time_us;
   est.scan_index = static_cast<std::uint32_t>(scan_index);
-  report_tracks(est, k, store.win(k), tracks, p);
+  report_tracks(est, k, store.win(k), tracks, p, kind);
   ClutterReport<T> u;
   u.id = 0;
   u.uniform = true;

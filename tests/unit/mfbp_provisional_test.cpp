@@ -1,0 +1,154 @@
+// MF-BP's provisional (lag-0) output (MfbpTracker::provisional(),
+// docs/algorithms/mfbp.md §Provisional output) on the small deterministic
+// scenario of mfbp_scenario.h: when it exists, which scan it is, that its
+// tracks are on the targets, and that it allocates nothing.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <memory>
+
+#include "alloc_guard.h"
+#include "mfbp_scenario.h"
+#include "mptrack/mfbp/mfbp_tracker.h"
+
+using namespace mptrack;
+
+using mfbp_test::TestCaps;
+
+namespace {
+
+constexpr std::size_t kClutter = 10;
+using Tracker = MfbpTracker<float, TestCaps>;
+using ScanT = Scan<float, TestCaps::kMaxMeasurements>;
+
+std::unique_ptr<Tracker> make_tracker(std::size_t window, std::size_t slide) {
+  auto trk = std::make_unique<Tracker>();
+  MfbpParams<float> p = seed000_default_params<float>();
+  p.window_length = window;
+  p.slide = slide;
+  p.uniform_rate_per_scan = float(kClutter);
+  REQUIRE(trk->init(p) == Status::kOk);
+  return trk;
+}
+
+// 3 sigma of the measurement noise in Cartesian at ~23 km (cross-range dominates).
+constexpr double kThreeSigma = 3.0 * 250.0;
+
+double distance_to_truth(const TrackReport<float>& r, int k, std::size_t i) {
+  double p[2];
+  mfbp_test::truth_at(k, i, p);
+  return std::hypot(static_cast<double>(r.state(0)) - p[0], static_cast<double>(r.state(2)) - p[1]);
+}
+
+}  // namespace
+
+TEST_CASE("mfbp provisional: a window every scan gives the newest scan's estimate from the first full window on") {
+  auto trk = make_tracker(7, 1);
+  mfbp_test::Lcg rng;
+  auto scan = std::make_unique<ScanT>();
+  for (int k = 0; k < 20; ++k) {
+    mfbp_test::make_scan(rng, k, kClutter, *scan);
+    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    // Scans 0..5 fill the window; from scan 6 on every step runs a window.
+    CHECK(trk->has_provisional() == (k >= 6));
+    if (trk->has_provisional()) {
+      CHECK(trk->provisional().scan_index == static_cast<std::uint32_t>(k));
+      CHECK(trk->provisional().time_us == scan->time_us);
+    }
+  }
+}
+
+TEST_CASE("mfbp provisional: with slide 3 it exists only on the steps that run a window") {
+  auto trk = make_tracker(7, 3);
+  mfbp_test::Lcg rng;
+  auto scan = std::make_unique<ScanT>();
+  for (int k = 0; k < 20; ++k) {
+    mfbp_test::make_scan(rng, k, kClutter, *scan);
+    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    // The first window runs at scan 6, then every third scan (9, 12, ...).
+    const bool window_ran = k >= 6 && (k - 6) % 3 == 0;
+    CHECK(trk->has_provisional() == window_ran);
+    if (window_ran) CHECK(trk->provisional().scan_index == static_cast<std::uint32_t>(k));
+  }
+}
+
+TEST_CASE("mfbp provisional: the online filter has none, its outputs have no lag") {
+  auto trk = make_tracker(1, 1);
+  mfbp_test::Lcg rng;
+  auto scan = std::make_unique<ScanT>();
+  for (int k = 0; k < 10; ++k) {
+    mfbp_test::make_scan(rng, k, kClutter, *scan);
+    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    CHECK_FALSE(trk->has_provisional());
+    REQUIRE(trk->outputs().size() == 1u);
+    CHECK(trk->outputs()[0].scan_index == static_cast<std::uint32_t>(k));
+  }
+}
+
+TEST_CASE("mfbp provisional: flush() and a refused scan leave none") {
+  auto trk = make_tracker(7, 1);
+  mfbp_test::Lcg rng;
+  auto scan = std::make_unique<ScanT>();
+  for (int k = 0; k < 8; ++k) {
+    mfbp_test::make_scan(rng, k, kClutter, *scan);
+    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+  }
+  REQUIRE(trk->has_provisional());
+  CHECK(trk->step(*scan) == Status::kOutOfOrder);  // the same time stamp again
+  CHECK_FALSE(trk->has_provisional());
+  mfbp_test::make_scan(rng, 8, kClutter, *scan);
+  REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+  REQUIRE(trk->has_provisional());
+  CHECK(trk->flush() == Status::kOk);
+  CHECK_FALSE(trk->has_provisional());
+}
+
+TEST_CASE("mfbp provisional: its confirmed tracks are on the targets at lag 0, one per target") {
+  auto trk = make_tracker(7, 1);
+  mfbp_test::Lcg rng;
+  auto scan = std::make_unique<ScanT>();
+  int covered[2] = {0, 0}, false_reports = 0, provisional_scans = 0;
+  for (int k = 0; k < 40; ++k) {
+    mfbp_test::make_scan(rng, k, kClutter, *scan);
+    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    if (k < 12 || !trk->has_provisional()) continue;
+    ++provisional_scans;
+    int near[2] = {0, 0};
+    for (const auto& r : trk->provisional().tracks) {
+      CHECK(r.confirmed);
+      if (distance_to_truth(r, k, 0) < kThreeSigma) {
+        ++near[0];
+      } else if (distance_to_truth(r, k, 1) < kThreeSigma) {
+        ++near[1];
+      } else {
+        ++false_reports;
+      }
+    }
+    for (int i = 0; i < 2; ++i) {
+      CHECK(near[i] <= 1);
+      covered[i] += near[i] == 1 ? 1 : 0;
+    }
+  }
+  CHECK(provisional_scans == 28);
+  CHECK(false_reports == 0);
+  CHECK(covered[0] >= provisional_scans * 9 / 10);
+  CHECK(covered[1] >= provisional_scans * 9 / 10);
+}
+
+TEST_CASE("mfbp provisional: a step that reports one allocates nothing") {
+  auto trk = make_tracker(7, 1);
+  mfbp_test::Lcg rng;
+  auto scan = std::make_unique<ScanT>();
+  std::size_t allocs = 0, reported = 0;
+  for (int k = 0; k < 15; ++k) {
+    mfbp_test::make_scan(rng, k, kClutter, *scan);
+    test::NoAllocScope guard;
+    const Status s = trk->step(*scan);
+    if (trk->has_provisional()) reported += trk->provisional().tracks.size();
+    allocs += guard.allocations();
+    CHECK(s != Status::kOutOfOrder);
+  }
+  CHECK(reported > 0u);
+  CHECK(allocs == 0u);
+}
