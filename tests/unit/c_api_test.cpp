@@ -279,3 +279,73 @@ TEST_CASE("an out-of-order scan is refused and a deinit tracker refuses every ca
   CHECK(mptrack_get_counters(t, &c) == MPTRACK_NOT_INITIALIZED);
   CHECK(mptrack_step(nullptr, &scan) == MPTRACK_NOT_INITIALIZED);
 }
+
+TEST_CASE("mptrack_provisional hands out the C++ tracker's provisional estimate bit for bit, and none for GNN") {
+  mptrack_mfbp_params p;
+  mptrack_mfbp_every_scan_params(&p);
+  mptrack_tracker* t = nullptr;
+  REQUIRE(mptrack_mfbp_init(&g_mem, sizeof g_mem, &p, &t, nullptr) == MPTRACK_OK);
+  static mptrack::MfbpTracker<float, mptrack::DefaultCaps> tracker;
+  REQUIRE(tracker.init(mptrack::every_scan_smoother_params<float>()) == mptrack::Status::kOk);
+  ScanOf<mptrack::MfbpTracker<float, mptrack::DefaultCaps>> cpp_scan;
+  std::size_t provisional_tracks = 0;
+  for (std::uint32_t k = 0; k < kCApiSceneScans; ++k) {
+    mptrack_detection d[kCApiSceneMaxDetections];
+    const mptrack_scan scan{c_api_scene_time_us(k), 0, c_api_scene_scan(k, d), d};
+    cpp_scan.time_us = scan.time_us;
+    cpp_scan.measurements.clear();
+    for (std::size_t j = 0; j < scan.num_detections; ++j) {
+      mptrack::Measurement<float> m;
+      m.range_m = d[j].range_m;
+      m.azimuth_rad = d[j].azimuth_rad;
+      m.amplitude = d[j].amplitude;
+      REQUIRE(cpp_scan.measurements.push_back(m) == mptrack::Status::kOk);
+    }
+    REQUIRE(mptrack_step(t, &scan) == static_cast<mptrack_status>(tracker.step(cpp_scan)));
+    mptrack_output_info info{};
+    mptrack_track tracks[8];
+    std::memset(tracks, 0, sizeof tracks);
+    std::size_t n = 0;
+    const mptrack_status st = mptrack_provisional(t, &info, tracks, 8, &n);
+    INFO("scan " << k);
+    REQUIRE((st == MPTRACK_OK) == tracker.has_provisional());
+    if (st != MPTRACK_OK) continue;
+    const auto& e = tracker.provisional();
+    CHECK(info.scan_index == k);
+    CHECK(info.scan_index == e.scan_index);
+    CHECK(info.time_us == e.time_us);
+    REQUIRE(n == e.tracks.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      mptrack_track expected;
+      std::memset(&expected, 0, sizeof expected);
+      const auto& r = e.tracks[i];
+      expected.id = r.id;
+      for (int a = 0; a < 4; ++a) {
+        expected.state[a] = r.state(a);
+        for (int b = 0; b < 4; ++b) expected.covariance[4 * a + b] = r.covariance(a, b);
+      }
+      expected.existence = r.existence;
+      expected.snr = r.snr;
+      expected.confirmed = 1;
+      expected.measurement_index = r.measurement_index;
+      CHECK(std::memcmp(&tracks[i], &expected, sizeof(mptrack_track)) == 0);
+    }
+    provisional_tracks += n;
+  }
+  CHECK(provisional_tracks > 0u);
+  REQUIRE(mptrack_flush(t) == MPTRACK_OK);
+  mptrack_output_info info{};
+  std::size_t n = 0;
+  CHECK(mptrack_provisional(t, &info, nullptr, 0, &n) == MPTRACK_INVALID_ARGUMENT);  // flush() leaves none
+  mptrack_deinit(t);
+
+  static mptrack_gnn_storage gnn_mem;
+  mptrack_gnn_params g;
+  c_api_scene_gnn_params(&g);
+  REQUIRE(mptrack_gnn_init(&gnn_mem, sizeof gnn_mem, &g, &t, nullptr) == MPTRACK_OK);
+  mptrack_detection d[kCApiSceneMaxDetections];
+  const mptrack_scan scan{c_api_scene_time_us(0), 0, c_api_scene_scan(0, d), d};
+  REQUIRE(mptrack_step(t, &scan) == MPTRACK_OK);
+  CHECK(mptrack_provisional(t, &info, nullptr, 0, &n) == MPTRACK_INVALID_ARGUMENT);  // GNN's outputs have no lag
+  mptrack_deinit(t);
+}

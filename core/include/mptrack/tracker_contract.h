@@ -37,6 +37,12 @@
 // 4. flush() returns kNotInitialized before init(); otherwise it
 //    finalises every held scan; the tracker may then continue with later
 //    scans (they start a new window).
+//
+// Optional: a tracker whose outputs() lag (a window smoother) may also have
+//   bool has_provisional() const;  const Estimate& provisional() const;
+// the estimate of the scan the last step() consumed, before it is final
+// (MfbpTracker; docs/algorithms/mfbp.md §Provisional output).
+// has_provisional_output_v<X> says whether X has them.
 #pragma once
 
 #include <cstdint>
@@ -107,7 +113,18 @@ template <class X>
 struct EstimatesMatch<X, std::void_t<typename X::OutputQueue::value_type>>
     : std::is_same<typename X::OutputQueue::value_type, typename X::Estimate> {};
 
+template <class X, class = void>
+struct HasProvisional : std::false_type {};
+template <class X>
+struct HasProvisional<X, std::void_t<decltype(std::declval<const X&>().has_provisional()),
+                                     decltype(std::declval<const X&>().provisional())>>
+    : std::is_same<decltype(std::declval<const X&>().provisional()), const typename X::Estimate&> {};
+
 }  // namespace contract_detail
+
+/// Does tracker X hand out a provisional estimate (the optional members above)?
+template <class X>
+inline constexpr bool has_provisional_output_v = contract_detail::HasProvisional<X>::value;
 
 /// Every compile-time cap counter of TrackerCounters: the sum rule 2 watches.
 inline std::uint64_t total_cap_hits(const TrackerCounters& c) {

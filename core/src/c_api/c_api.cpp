@@ -63,6 +63,14 @@ mptrack_status mptrack_output_tracks(const mptrack_tracker* tracker, size_t outp
   return tracker->ops->output(tracker, output, nullptr, tracks, capacity, count);
 }
 
+mptrack_status mptrack_provisional(const mptrack_tracker* tracker, mptrack_output_info* info, mptrack_track* tracks,
+                                   size_t capacity, size_t* count) {
+  if (!live(tracker)) return MPTRACK_NOT_INITIALIZED;
+  if (info == nullptr || count == nullptr || (capacity > 0u && tracks == nullptr)) return MPTRACK_INVALID_ARGUMENT;
+  *count = 0;
+  return tracker->ops->provisional(tracker, info, tracks, capacity, count);
+}
+
 mptrack_status mptrack_get_counters(const mptrack_tracker* tracker, mptrack_counters* counters) {
   if (!live(tracker)) return MPTRACK_NOT_INITIALIZED;
   if (counters == nullptr) return MPTRACK_INVALID_ARGUMENT;

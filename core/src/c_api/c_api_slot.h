@@ -25,6 +25,10 @@ struct Ops {
   std::size_t (*num_outputs)(const mptrack_tracker*);
   mptrack_status (*output)(const mptrack_tracker*, std::size_t, mptrack_output_info*, mptrack_track*,
                            std::size_t, std::size_t*);
+  /// The provisional estimate (tracker_contract.h, optional): as output, for
+  /// the one estimate; MPTRACK_INVALID_ARGUMENT when there is none.
+  mptrack_status (*provisional)(const mptrack_tracker*, mptrack_output_info*, mptrack_track*, std::size_t,
+                                std::size_t*);
   const TrackerCounters& (*counters)(const mptrack_tracker*);
   void (*destroy)(mptrack_tracker*);
   std::size_t max_detections;
@@ -117,13 +121,10 @@ void copy_track(const TrackReport<T>& r, mptrack_track& o) {
   o.measurement_index = r.measurement_index;
 }
 
-/// Output `k` of the last call: its info and up to `capacity` tracks.
-template <class X>
-mptrack_status slot_output(const mptrack_tracker* t, std::size_t k, mptrack_output_info* info,
-                           mptrack_track* tracks, std::size_t capacity, std::size_t* count) {
-  const Slot<X>* s = slot_of<X>(t);
-  if (k >= slot_num_outputs<X>(t)) return MPTRACK_INVALID_ARGUMENT;
-  const typename X::Estimate& e = s->tracker.outputs()[k];
+/// Estimate e: its info and up to `capacity` tracks (count: nullptr = info only).
+template <class Estimate>
+mptrack_status copy_estimate(const Estimate& e, mptrack_output_info* info, mptrack_track* tracks,
+                             std::size_t capacity, std::size_t* count) {
   if (info != nullptr) {
     info->time_us = e.time_us;
     info->scan_index = e.scan_index;
@@ -134,6 +135,30 @@ mptrack_status slot_output(const mptrack_tracker* t, std::size_t k, mptrack_outp
   for (; n < e.tracks.size() && n < capacity; ++n) copy_track(e.tracks[n], tracks[n]);
   *count = n;
   return n < e.tracks.size() ? MPTRACK_CAPACITY_EXCEEDED : MPTRACK_OK;
+}
+
+/// Output `k` of the last call: its info and up to `capacity` tracks.
+template <class X>
+mptrack_status slot_output(const mptrack_tracker* t, std::size_t k, mptrack_output_info* info,
+                           mptrack_track* tracks, std::size_t capacity, std::size_t* count) {
+  if (k >= slot_num_outputs<X>(t)) return MPTRACK_INVALID_ARGUMENT;
+  return copy_estimate(slot_of<X>(t)->tracker.outputs()[k], info, tracks, capacity, count);
+}
+
+/// The provisional estimate of the last step(), if X has one and the step
+/// was not refused by mptrack_step.
+template <class X>
+mptrack_status slot_provisional(const mptrack_tracker* t, mptrack_output_info* info, mptrack_track* tracks,
+                                std::size_t capacity, std::size_t* count) {
+  if constexpr (has_provisional_output_v<X>) {
+    const Slot<X>* s = slot_of<X>(t);
+    if (!s->outputs_valid || !s->tracker.has_provisional()) return MPTRACK_INVALID_ARGUMENT;
+    return copy_estimate(s->tracker.provisional(), info, tracks, capacity, count);
+  } else {
+    static_cast<void>(t), static_cast<void>(info), static_cast<void>(tracks), static_cast<void>(capacity),
+        static_cast<void>(count);
+    return MPTRACK_INVALID_ARGUMENT;
+  }
 }
 
 template <class X>
@@ -150,9 +175,10 @@ void slot_destroy(mptrack_tracker* t) {
 }
 
 template <class X>
-inline constexpr Ops kOps = {&slot_step<X>,     &slot_flush<X>,    &slot_num_outputs<X>,
-                             &slot_output<X>,   &slot_counters<X>, &slot_destroy<X>,
-                             kMaxDetections<X>, kMaxTracks<X>};
+inline constexpr Ops kOps = {&slot_step<X>,        &slot_flush<X>,    &slot_num_outputs<X>,
+                             &slot_output<X>,      &slot_provisional<X>,
+                             &slot_counters<X>,    &slot_destroy<X>,
+                             kMaxDetections<X>,    kMaxTracks<X>};
 
 /// mptrack_<tracker>_init: checks the memory block and the params (naming
 /// the refused field), then constructs Slot<X> in the block and inits it.

@@ -5,25 +5,16 @@
 
 #include <memory>
 #include <string>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 #include "mptrack/scenario/generator.h"
+#include "mptrack/tracker_contract.h"
 #include "mptrack/tracker_params.h"
 #include "mptrack/validate.h"
 #include "param_error_text.h"
 #include "tracker_adapter.h"
 
 namespace mptrack::sim {
-
-/// Does Tracker hand out a provisional estimate (has_provisional(), provisional())?
-template <class Tracker, class = void>
-struct HasProvisional : std::false_type {};
-template <class Tracker>
-struct HasProvisional<Tracker, std::void_t<decltype(std::declval<const Tracker&>().has_provisional()),
-                                           decltype(std::declval<const Tracker&>().provisional())>>
-    : std::true_type {};
 
 template <class Tracker>
 class CoreTrackerAdapter : public TrackerAdapter {
@@ -56,7 +47,7 @@ class CoreTrackerAdapter : public TrackerAdapter {
   }
 
   bool provisional(EstimateOut& out) const override {
-    if constexpr (HasProvisional<Tracker>::value) {
+    if constexpr (has_provisional_output_v<Tracker>) {
       if (!tracker_->has_provisional()) return false;
       out = to_estimate_out(tracker_->provisional());
       return true;

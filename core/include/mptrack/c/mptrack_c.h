@@ -312,6 +312,15 @@ mptrack_status mptrack_output(const mptrack_tracker* tracker, size_t output, mpt
  * copied. MPTRACK_CAPACITY_EXCEEDED if the scan has more than capacity. */
 mptrack_status mptrack_output_tracks(const mptrack_tracker* tracker, size_t output, mptrack_track* tracks,
                                      size_t capacity, size_t* count);
+/* The provisional (lag-0) estimate of the scan the last mptrack_step()
+ * consumed, before it is final (window smoothers: MF-BP with slide <
+ * window_length, after a step that processed a window; docs/algorithms/
+ * mfbp.md "Provisional output"). Fills *info and copies up to capacity
+ * tracks as mptrack_output_tracks does; MPTRACK_INVALID_ARGUMENT when the
+ * last call left none (a buffering step, flush(), a refused scan, or a
+ * tracker whose outputs have no lag). */
+mptrack_status mptrack_provisional(const mptrack_tracker* tracker, mptrack_output_info* info, mptrack_track* tracks,
+                                   size_t capacity, size_t* count);
 mptrack_status mptrack_get_counters(const mptrack_tracker* tracker, mptrack_counters* counters);
 size_t mptrack_max_detections(const mptrack_tracker* tracker);  /* per scan */
 size_t mptrack_max_tracks(const mptrack_tracker* tracker);      /* per finalised scan */
