@@ -84,6 +84,8 @@ nlohmann::ordered_json summary_to_json(const Summary& s) {
   j["clutter_scale"] = s.clutter_scale;
   j["eval_scans"] = {s.eval_first_scan, s.eval_last_scan};
   j["mean_ospa"] = s.mean_ospa;
+  j["realtime_ospa"] = s.mean_realtime_ospa;
+  j["realtime_scan_fraction"] = s.realtime_scan_fraction;
   j["mean_gospa"] = s.mean_gospa;
   j["car"] = s.car;
   j["car_correct"] = s.car_correct;

@@ -340,6 +340,27 @@ class LaggingTracker final : public TrackerAdapter {
   std::uint32_t n_ = 0;
 };
 
+/// LaggingTracker that also hands out a provisional estimate of the scan
+/// it just consumed on steps 2 and 4.
+class ProvisionalTracker final : public TrackerAdapter {
+ public:
+  std::string init(const TrackerSetup&) override { return ""; }
+  Status step(const sc::SimScan& s, std::vector<EstimateOut>& out) override { return lag_.step(s, out); }
+  Status flush(std::vector<EstimateOut>& out) override { return lag_.flush(out); }
+  TrackerCounters counters() const override { return {}; }
+  bool provisional(EstimateOut& out) const override {
+    ++calls_;
+    if (calls_ != 2 && calls_ != 4) return false;
+    out = EstimateOut{};
+    out.scan = calls_;
+    return true;
+  }
+
+ private:
+  LaggingTracker lag_;
+  mutable std::uint32_t calls_ = 0;  // one call per step
+};
+
 /// The first 5 scans of seed000-s2, run 0 begun.
 std::unique_ptr<MeasurementSource> five_scans() {
   sc::ScenarioSpec spec;
@@ -381,4 +402,44 @@ TEST_CASE("sim run loop: steps whose mixture truncation grew are counted once ea
   const Summary s = agg.summary();
   CHECK(s.steps_truncating == 4);
   CHECK(summary_to_json(s)["steps_mixture_truncated"] == 4);
+}
+
+TEST_CASE("sim aggregator: real-time OSPA averages the evaluation scans that have a real-time estimate") {
+  // 2 runs x 3 scans, evaluation interval 2..3. Run a has a real-time
+  // estimate of scans 2 and 3 (OSPA 40, 60), run b of scan 3 only (OSPA 80;
+  // its scan 2 entry, OSPA 500, was never handed out in time and does not count).
+  Aggregator agg(SummaryHeader{"s", "t", 2, 3, 1, 1.0, 2, 3, TrackScoringParams{}});
+  const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
+  const std::vector<ScanMetrics> m = {metrics(1, 1, 0, 0), metrics(1, 1, 0, 0), metrics(1, 1, 0, 0)};
+  RunRecord a = record(0, {1, 2, 3}, {0, 0, 0});
+  a.realtime_by_scan = a.by_scan;
+  a.realtime_by_scan[1].reported_after_scan = 2;
+  a.realtime_by_scan[2].reported_after_scan = 3;
+  const std::vector<ScanMetrics> ra = {metrics(900, 1, 0, 0), metrics(40, 1, 1, 0), metrics(60, 1, 1, 0)};
+  RunRecord b = record(1, {1, 2, 3}, {0, 0, 0});
+  b.realtime_by_scan = b.by_scan;
+  b.realtime_by_scan[2].reported_after_scan = 3;
+  const std::vector<ScanMetrics> rb = {metrics(900, 1, 0, 0), metrics(500, 1, 0, 0), metrics(80, 1, 1, 0)};
+  agg.add_run(scans, a, m, &ra);
+  agg.add_run(scans, b, m, &rb);
+  const Summary s = agg.summary();
+  CHECK(s.mean_realtime_ospa == doctest::Approx(60.0));  // (40 + 60 + 80) / 3
+  CHECK(s.realtime_scan_fraction == doctest::Approx(0.75));  // 3 of 4 evaluation scans
+  CHECK(s.mean_ospa == doctest::Approx(1.0));
+}
+
+TEST_CASE("sim run loop: the real-time stream holds each step's own scan, final or provisional") {
+  const std::unique_ptr<MeasurementSource> owned = five_scans();
+  MeasurementSource& source = *owned;
+  LaggingTracker lag;  // finalises scan k after step k + 2: never its own scan in time
+  const RunRecord plain = run_tracker(source, lag, 0, nullptr);
+  REQUIRE(plain.realtime_by_scan.size() == 5);
+  for (const EstimateOut& e : plain.realtime_by_scan) CHECK(e.reported_after_scan == 0);
+  CHECK(plain.provisional_steps == 0);
+  ProvisionalTracker prov;
+  const RunRecord rec = run_tracker(source, prov, 0, nullptr);
+  REQUIRE(rec.realtime_by_scan.size() == 5);
+  const std::uint32_t expected[5] = {0, 2, 0, 4, 0};  // scans 2 and 4, handed out after their own step
+  for (std::uint32_t k = 1; k <= 5; ++k) CHECK(rec.realtime_by_scan[k - 1].reported_after_scan == expected[k - 1]);
+  CHECK(rec.provisional_steps == 2);
 }

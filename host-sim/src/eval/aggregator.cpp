@@ -79,7 +79,8 @@ Aggregator::Aggregator(const SummaryHeader& h) {
 }
 
 void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunRecord& rec,
-                         const std::vector<ScanMetrics>& metrics) {
+                         const std::vector<ScanMetrics>& metrics, const std::vector<ScanMetrics>* realtime) {
+  if (realtime != nullptr) add_realtime(rec, *realtime);
   for (const std::uint32_t k : rec.delivered) {
     const scenario::SimScan& s = scans[k - 1];
     measurements_ += static_cast<double>(s.measurements.size());
@@ -119,6 +120,15 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   tracks_found_ += static_cast<double>(found.size());
   add_object_errors(scans, metrics);
   sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring, &rec.realtime_by_scan));
+}
+
+void Aggregator::add_realtime(const RunRecord& rec, const std::vector<ScanMetrics>& realtime) {
+  const std::size_t n = std::min(realtime.size(), rec.realtime_by_scan.size());
+  for (std::uint32_t k = sum_.eval_first_scan; k <= sum_.eval_last_scan && k <= n; ++k) {
+    if (k == 0 || rec.realtime_by_scan[k - 1].reported_after_scan == 0) continue;  // no estimate of scan k in time
+    realtime_ospa_ += realtime[k - 1].ospa;
+    ++realtime_scans_;
+  }
 }
 
 void Aggregator::add_object_errors(const std::vector<scenario::SimScan>& scans,
@@ -170,6 +180,8 @@ Summary Aggregator::summary() const {
   s.mean_ospa = ospa_ / n;
   s.mean_gospa = gospa_ / n;
   s.mean_ospa_mahalanobis = ospa_mahalanobis_ / n;
+  s.mean_realtime_ospa = realtime_scans_ > 0 ? realtime_ospa_ / static_cast<double>(realtime_scans_) : 0.0;
+  s.realtime_scan_fraction = static_cast<double>(realtime_scans_) / n;
   s.gospa_localisation = loc_ / n;
   s.gospa_missed = missed_pow_ / n;
   s.gospa_false = false_pow_ / n;

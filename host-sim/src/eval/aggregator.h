@@ -50,6 +50,11 @@ struct Summary : SummaryHeader {
   double mean_ospa = 0.0;       ///< over runs x evaluation scans [m]
   double mean_gospa = 0.0;      ///< [m]
   double mean_ospa_mahalanobis = 0.0;  ///< MOSPA with the Mahalanobis base distance (seed 003) [-]
+  /// OSPA of the real-time stream (RunRecord::realtime_by_scan: each step's
+  /// estimate of its own scan) over the evaluation scans that have one [m];
+  /// mean_ospa for a filter, the provisional output's for a smoother.
+  double mean_realtime_ospa = 0.0;
+  double realtime_scan_fraction = 0.0;  ///< evaluation scans with a real-time estimate / all of them
   double gospa_localisation = 0.0;  ///< mean per evaluation scan [m^p]
   double gospa_missed = 0.0;        ///< mean per evaluation scan [m^p] = c^p/2 x missed
   double gospa_false = 0.0;         ///< mean per evaluation scan [m^p] = c^p/2 x false
@@ -104,13 +109,16 @@ class Aggregator {
   explicit Aggregator(const SummaryHeader& header);
   /// Adds one run: its scans (truth and measurements), the tracker's record
   /// and the evaluator's metrics of every scan (index scan-1).
+  /// realtime (optional): the evaluator's metrics of record.realtime_by_scan
+  /// (index scan-1), for mean_realtime_ospa.
   void add_run(const std::vector<scenario::SimScan>& scans, const RunRecord& record,
-               const std::vector<ScanMetrics>& metrics);
+               const std::vector<ScanMetrics>& metrics, const std::vector<ScanMetrics>* realtime = nullptr);
   /// Means over everything added so far.
   Summary summary() const;
 
  private:
   void add_eval_scan(const ScanMetrics& m);
+  void add_realtime(const RunRecord& record, const std::vector<ScanMetrics>& realtime);
   void add_object_errors(const std::vector<scenario::SimScan>& scans, const std::vector<ScanMetrics>& metrics);
 
   Summary sum_;  ///< header, tallies and counts; means are formed in summary()
@@ -118,6 +126,8 @@ class Aggregator {
   double missed_ = 0.0, false_n_ = 0.0, card_ = 0.0, nft_ = 0.0, confirmed_ = 0.0, truths_ = 0.0;
   double measurements_ = 0.0, tracks_found_ = 0.0;
   double ospa_mahalanobis_ = 0.0;
+  double realtime_ospa_ = 0.0;           ///< sum over evaluation scans with a real-time estimate
+  std::uint64_t realtime_scans_ = 0;     ///< those scans
   std::uint64_t delivered_ = 0;
   std::vector<double> latency_us_;
   std::vector<double> confirmed_sq_;  ///< sum over runs of confirmed^2, index scan-1

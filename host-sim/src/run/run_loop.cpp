@@ -72,7 +72,8 @@ namespace {
 /// The estimate of the step's own scan (tracker numbering: the step count)
 /// that a step handed out, final (among finals[from..]) or provisional, appended to realtime.
 void keep_realtime(const std::vector<EstimateOut>& finals, std::size_t from, const TrackerAdapter& tracker,
-                   std::uint32_t step_scan, std::uint32_t source_scan, std::vector<EstimateOut>& realtime) {
+                   std::uint32_t step_scan, std::uint32_t source_scan, std::vector<EstimateOut>& realtime,
+                   std::uint32_t& provisional_steps) {
   for (std::size_t i = from; i < finals.size(); ++i) {
     if (finals[i].scan == step_scan) {
       realtime.push_back(finals[i]);
@@ -83,6 +84,7 @@ void keep_realtime(const std::vector<EstimateOut>& finals, std::size_t from, con
   if (!tracker.provisional(p) || p.scan != step_scan) return;
   p.reported_after_scan = source_scan;
   realtime.push_back(std::move(p));
+  ++provisional_steps;
 }
 
 }  // namespace
@@ -113,7 +115,8 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
     const Status st = frame != nullptr ? tracker.step_frame(*frame, s, finals) : tracker.step(s, finals);
     const auto t1 = std::chrono::steady_clock::now();
     stamp(before, s.scan);
-    keep_realtime(finals, before, tracker, static_cast<std::uint32_t>(rec.delivered.size()), s.scan, realtime);
+    keep_realtime(finals, before, tracker, static_cast<std::uint32_t>(rec.delivered.size()), s.scan, realtime,
+                  rec.provisional_steps);
     count_truncation();
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     rec.latency_us[s.scan - 1] = us;
@@ -149,7 +152,11 @@ std::vector<Summary> run_loop(ScanSource& source, const LoopConfig& cfg, const s
       std::unique_ptr<TrackerAdapter> tracker = make_initialised(cfg, cfg.trackers[t], spec);
       const RunRecord rec = run_tracker(source, *tracker, run, &progress);
       const std::vector<ScanMetrics> metrics = evaluator.evaluate_run(source.scans(), rec.by_scan);
-      aggregators[t].add_run(source.scans(), rec, metrics);
+      // The real-time stream is the final one unless the tracker handed out provisional estimates.
+      const std::vector<ScanMetrics> realtime =
+          rec.provisional_steps > 0 ? evaluator.evaluate_run(source.scans(), rec.realtime_by_scan)
+                                    : std::vector<ScanMetrics>{};
+      aggregators[t].add_run(source.scans(), rec, metrics, rec.provisional_steps > 0 ? &realtime : &metrics);
       for (RunObserver* o : observers) o->on_run(t, source.scans(), rec, metrics);
     }
   }

@@ -20,6 +20,9 @@ struct RunRecord {
   /// smoother; TrackerAdapter::provisional); empty where it handed out
   /// neither (a smoother's step that only stored its scan).
   std::vector<EstimateOut> realtime_by_scan;
+  /// Steps whose realtime_by_scan entry was a provisional estimate (0: the
+  /// real-time stream is the final one, as for every filter).
+  std::uint32_t provisional_steps = 0;
   std::vector<double> latency_us;        ///< wall time of the step() that consumed scan k (index k-1); 0 if not delivered
   std::vector<std::uint32_t> delivered;  ///< scans handed to the tracker, in order: step i consumed scan delivered[i]
   std::vector<Status> statuses;          ///< every step() status, then flush()'s
