@@ -1,7 +1,8 @@
 // MF-BP's provisional (lag-0) output (MfbpTracker::provisional(),
 // docs/algorithms/mfbp.md §Provisional output) on the small deterministic
-// scenario of mfbp_scenario.h: when it exists, which scan it is, that its
-// tracks are on the targets, and that it allocates nothing.
+// scenario of mfbp_scenario.h: when it exists, which scan it is, how it is
+// predicted between windows, that its tracks are on the targets, and that
+// it allocates nothing.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -59,18 +60,41 @@ TEST_CASE("mfbp provisional: a window every scan gives the newest scan's estimat
   }
 }
 
-TEST_CASE("mfbp provisional: with slide 3 it exists only on the steps that run a window") {
+TEST_CASE("mfbp provisional: with slide 3 it is computed on window steps and predicted on the others") {
   auto trk = make_tracker(7, 3);
   mfbp_test::Lcg rng;
   auto scan = std::make_unique<ScanT>();
+  Tracker::Estimate previous;
+  std::size_t predicted_tracks = 0;
   for (int k = 0; k < 20; ++k) {
     mfbp_test::make_scan(rng, k, kClutter, *scan);
     REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
     // The first window runs at scan 6, then every third scan (9, 12, ...).
     const bool window_ran = k >= 6 && (k - 6) % 3 == 0;
-    CHECK(trk->has_provisional() == window_ran);
-    if (window_ran) CHECK(trk->provisional().scan_index == static_cast<std::uint32_t>(k));
+    REQUIRE(trk->has_provisional() == (k >= 6));
+    if (k < 6) continue;
+    const Tracker::Estimate& e = trk->provisional();
+    CHECK(e.scan_index == static_cast<std::uint32_t>(k));
+    CHECK(e.time_us == scan->time_us);
+    if (!window_ran) {
+      // Predicted from the previous step's estimate: same tracks, position
+      // advanced by velocity x 1.25 s, velocity kept, no measurement.
+      REQUIRE(e.tracks.size() == previous.tracks.size());
+      for (std::size_t i = 0; i < e.tracks.size(); ++i) {
+        const auto& a = previous.tracks[i];
+        const auto& b = e.tracks[i];
+        CHECK(b.id == a.id);
+        CHECK(b.state(0) == doctest::Approx(a.state(0) + 1.25f * a.state(1)));
+        CHECK(b.state(2) == doctest::Approx(a.state(2) + 1.25f * a.state(3)));
+        CHECK(b.state(1) == a.state(1));
+        CHECK(b.covariance(0, 0) > a.covariance(0, 0));
+        CHECK(b.measurement_index == -1);
+        ++predicted_tracks;
+      }
+    }
+    previous = e;
   }
+  CHECK(predicted_tracks > 0u);
 }
 
 TEST_CASE("mfbp provisional: the online filter has none, its outputs have no lag") {
@@ -86,7 +110,7 @@ TEST_CASE("mfbp provisional: the online filter has none, its outputs have no lag
   }
 }
 
-TEST_CASE("mfbp provisional: flush() and a refused scan leave none") {
+TEST_CASE("mfbp provisional: flush() and a refused scan leave none, and none is predicted after flush()") {
   auto trk = make_tracker(7, 1);
   mfbp_test::Lcg rng;
   auto scan = std::make_unique<ScanT>();
@@ -101,6 +125,9 @@ TEST_CASE("mfbp provisional: flush() and a refused scan leave none") {
   REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
   REQUIRE(trk->has_provisional());
   CHECK(trk->flush() == Status::kOk);
+  CHECK_FALSE(trk->has_provisional());
+  mfbp_test::make_scan(rng, 9, kClutter, *scan);  // a new window starts: nothing to predict
+  REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
   CHECK_FALSE(trk->has_provisional());
 }
 

@@ -314,11 +314,12 @@ mptrack_status mptrack_output_tracks(const mptrack_tracker* tracker, size_t outp
                                      size_t capacity, size_t* count);
 /* The provisional (lag-0) estimate of the scan the last mptrack_step()
  * consumed, before it is final (window smoothers: MF-BP with slide <
- * window_length, after a step that processed a window; docs/algorithms/
- * mfbp.md "Provisional output"). Fills *info and copies up to capacity
- * tracks as mptrack_output_tracks does; MPTRACK_INVALID_ARGUMENT when the
- * last call left none (a buffering step, flush(), a refused scan, or a
- * tracker whose outputs have no lag). */
+ * window_length; on steps between windows the last window's estimate
+ * predicted to the scan; docs/algorithms/mfbp.md "Provisional output").
+ * Fills *info and copies up to capacity tracks as mptrack_output_tracks
+ * does; MPTRACK_INVALID_ARGUMENT when the last call left none (before the
+ * first window, flush(), a refused scan, or a tracker whose outputs have no
+ * lag). */
 mptrack_status mptrack_provisional(const mptrack_tracker* tracker, mptrack_output_info* info, mptrack_track* tracks,
                                    size_t capacity, size_t* count);
 mptrack_status mptrack_get_counters(const mptrack_tracker* tracker, mptrack_counters* counters);

@@ -142,6 +142,7 @@ class MfbpTracker {
     counters_ = TrackerCounters{};
     outputs_.clear();
     has_provisional_ = false;
+    provisional_base_ = false;
     store_.clear();
     next_track_id_ = 1;
     next_comp_id_ = 1;
@@ -211,7 +212,13 @@ class MfbpTracker {
       if (t.alive) t.open_scan(store_.n_win());
     }
     store_.push_window();
-    if (store_.n_win() >= params_.window_length) process_window(params_.slide, /*provisional=*/true);
+    if (store_.n_win() >= params_.window_length) {
+      process_window(params_.slide, /*provisional=*/true);
+    } else if (provisional_base_) {
+      // A step that only stores its scan: the last provisional estimate, predicted.
+      mfbp::coast_report(provisional_, scan.time_us, finalized_ + store_.n_win() - 1, params_.accel_var_m2ps4);
+      has_provisional_ = true;
+    }
     return accepted_status(counters_, caps_before, partial);
   }
 
@@ -221,6 +228,7 @@ class MfbpTracker {
     if (!initialized_) return Status::kNotInitialized;
     outputs_.clear();
     has_provisional_ = false;
+    provisional_base_ = false;  // every held scan is final now
     const std::uint64_t caps_before = total_cap_hits(counters_);
     MPTRACK_PROFILE_STEP(g_mfbp);
     if (store_.n_win() > 0) process_window(store_.n_win());
@@ -229,14 +237,17 @@ class MfbpTracker {
 
   const OutputQueue& outputs() const { return outputs_; }
   /// Provisional (lag-0) output (docs/algorithms/mfbp.md §Provisional
-  /// output): after a step() that processed a window without finalising its
-  /// newest scan, that scan's estimate as the window sees it now, every
-  /// confirmed track with the rules of outputs(). Later windows revise it;
-  /// outputs() hands out the final estimate of the same scan
-  /// window_length - slide scans later. None (has_provisional() false) after
-  /// a step() that only stored its scan (slide > 1), a refused scan,
-  /// flush(), or when every scan is finalised at once (the online filter,
-  /// whose outputs() have no lag). Valid until the next call.
+  /// output): the estimate of the scan the last step() consumed. After a
+  /// step() that processed a window without finalising its newest scan,
+  /// that scan's estimate as the window sees it now, every confirmed track
+  /// with the rules of outputs(); after a step() that only stored its scan
+  /// (slide > 1), that estimate predicted to the scan's time (CV model, no
+  /// measurement). Later windows revise it; outputs() hands out the final
+  /// estimate of the same scan window_length - slide scans later. None
+  /// (has_provisional() false) before the first window, after a refused
+  /// scan, flush() or a gap restart (until the next window), or when every
+  /// scan is finalised at once (the online filter, whose outputs() have no
+  /// lag). Valid until the next call.
   bool has_provisional() const { return has_provisional_; }
   const Estimate& provisional() const { return provisional_; }
   const TrackerCounters& counters() const { return counters_; }
@@ -257,6 +268,7 @@ class MfbpTracker {
   /// and the Dirichlet state carry over.
   void restart_after_gap() {
     ++counters_.gap_resets;
+    provisional_base_ = false;
     if (store_.n_win() > 0) process_window(store_.n_win());
     mfbp::drop_all(tracks_, clutter_, counters_);
     store_.clear();
@@ -298,6 +310,7 @@ class MfbpTracker {
       mfbp::report_scan(provisional_, n - 1, newest_index, store_, tracks_, clutter_, params_,
                         mfbp::ReportKind::kProvisional);
       has_provisional_ = true;
+      provisional_base_ = true;
     }
     shift_window(finalize_count);
   }
@@ -374,6 +387,7 @@ class MfbpTracker {
   OutputQueue outputs_{};
   Estimate provisional_{};
   bool has_provisional_ = false;
+  bool provisional_base_ = false;  ///< provisional_ holds a window's estimate that buffering steps predict
   TrackerCounters counters_{};
   mfbp::AssociationStats assoc_stats_{};
   std::uint32_t next_track_id_ = 1;

@@ -7,8 +7,8 @@
 // One missed scan is tolerated before a confirmed track stops being reported
 // (report_existence_min; our choice, docs/algorithms/mfbp.md §Departures).
 // The same report of the window's newest scan, before it is final, is the
-// smoother's provisional (lag 0) output (docs/algorithms/mfbp.md §Provisional
-// output).
+// smoother's provisional (lag 0) output, predicted to the scans that arrive
+// before the next window (docs/algorithms/mfbp.md §Provisional output).
 #pragma once
 
 #include <cstddef>
@@ -17,6 +17,7 @@
 #include "mptrack/mfbp/clutter_slot.h"
 #include "mptrack/mfbp/mfbp_params.h"
 #include "mptrack/mfbp/model_constants.h"
+#include "mptrack/mfbp/target_filter.h"
 #include "mptrack/mfbp/track_slot.h"
 #include "mptrack/mfbp/window_store.h"
 #include "mptrack/track_report.h"
@@ -119,6 +120,23 @@ void report_scan(Estimate& est, std::size_t k, std::uint64_t scan_index, const W
   } else {
     report_clutter_beliefs(est, u, k, cl, p);
   }
+}
+
+/// The provisional estimate est predicted to time_us, scan number
+/// scan_index, on a step that processed no window (docs/algorithms/mfbp.md
+/// §Provisional output): every track's state and covariance by the CV model
+/// with acceleration variance q (cv_predict, SPD guard included; a repair is
+/// not counted, this is output only), no measurement; existence, SNR and the
+/// clutter map as the last window left them.
+template <class T, class Estimate>
+void coast_report(Estimate& est, std::uint64_t time_us, std::uint64_t scan_index, T q) {
+  const T dt = dt_s<T>(est.time_us, time_us);
+  for (auto& r : est.tracks) {
+    static_cast<void>(cv_predict(r.state, r.covariance, dt, q));
+    r.measurement_index = -1;
+  }
+  est.time_us = time_us;
+  est.scan_index = static_cast<std::uint32_t>(scan_index);
 }
 
 }  // namespace mptrack::mfbp
