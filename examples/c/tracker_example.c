@@ -114,6 +114,27 @@ static uint32_t print_outputs(const mptrack_tracker* t, mptrack_example_print pr
   return seen;
 }
 
+/* The smoother finalises a scan only when it leaves the window (here 2
+ * scans later); for a picture of the scan just consumed it hands out a
+ * provisional estimate, revised by later windows. Prints its confirmed
+ * track count; nothing before the first window. */
+static void print_provisional(const mptrack_tracker* t, mptrack_example_print print) {
+  mptrack_track tracks[16];
+  mptrack_output_info info;
+  size_t count = 0;
+  size_t i;
+  unsigned confirmed = 0;
+  line_buf b = {{0}, 0};
+  if (mptrack_provisional(t, &info, tracks, 16u, &count) == MPTRACK_INVALID_ARGUMENT) return;
+  for (i = 0; i < count; ++i) confirmed += tracks[i].confirmed ? 1u : 0u;
+  put_str(&b, "now: scan ");
+  put_uint(&b, info.scan_index);
+  put_str(&b, ", ");
+  put_uint(&b, confirmed);
+  put_str(&b, " confirmed track(s), provisional");
+  print(b.text);
+}
+
 static int count_bits(uint32_t v) {
   int n = 0;
   for (; v != 0u; v &= v - 1u) ++n;
@@ -159,6 +180,7 @@ int mptrack_example_run(mptrack_example_print print) {
     s = mptrack_step(tracker, &scan);
     if (s != MPTRACK_OK && s != MPTRACK_PARTIAL) break; /* PARTIAL: some clutter rejected, counted */
     seen |= print_outputs(tracker, print);
+    print_provisional(tracker, print);
   }
   if (s == MPTRACK_OK || s == MPTRACK_PARTIAL) s = mptrack_flush(tracker);
   seen |= print_outputs(tracker, print);
