@@ -23,6 +23,22 @@ namespace {
 template <class X>
 using ScanOf = typename X::ScanType;
 
+/// A C++ track report as the C API's track, written out here independently
+/// of c_api_slot.h into t, zeroed first so that padding bytes compare equal
+/// (in place: a copy need not keep padding).
+void write_c_track(const mptrack::TrackReport<float>& r, mptrack_track& t) {
+  std::memset(&t, 0, sizeof t);
+  t.id = r.id;
+  for (int a = 0; a < 4; ++a) {
+    t.state[a] = r.state(a);
+    for (int b = 0; b < 4; ++b) t.covariance[4 * a + b] = r.covariance(a, b);
+  }
+  t.existence = r.existence;
+  t.snr = r.snr;
+  t.confirmed = r.confirmed ? 1 : 0;
+  t.measurement_index = r.measurement_index;
+}
+
 /// The C++ tracker on the scene's detections: every track of every
 /// finalised scan, in output order, as the C records are.
 template <class X>
@@ -33,19 +49,10 @@ std::vector<c_api_record> run_cpp(X& tracker) {
     for (std::size_t o = 0; o < tracker.outputs().size(); ++o) {
       const auto& e = tracker.outputs()[o];
       for (std::size_t i = 0; i < e.tracks.size(); ++i) {
-        const auto& r = e.tracks[i];
         c_api_record rec{};
         rec.scan_index = e.scan_index;
         rec.time_us = e.time_us;
-        rec.track.id = r.id;
-        for (int a = 0; a < 4; ++a) {
-          rec.track.state[a] = r.state(a);
-          for (int b = 0; b < 4; ++b) rec.track.covariance[4 * a + b] = r.covariance(a, b);
-        }
-        rec.track.existence = r.existence;
-        rec.track.snr = r.snr;
-        rec.track.confirmed = r.confirmed ? 1 : 0;
-        rec.track.measurement_index = r.measurement_index;
+        write_c_track(e.tracks[i], rec.track);
         out.push_back(rec);
       }
     }
@@ -317,17 +324,7 @@ TEST_CASE("mptrack_provisional hands out the C++ tracker's provisional estimate 
     REQUIRE(n == e.tracks.size());
     for (std::size_t i = 0; i < n; ++i) {
       mptrack_track expected;
-      std::memset(&expected, 0, sizeof expected);
-      const auto& r = e.tracks[i];
-      expected.id = r.id;
-      for (int a = 0; a < 4; ++a) {
-        expected.state[a] = r.state(a);
-        for (int b = 0; b < 4; ++b) expected.covariance[4 * a + b] = r.covariance(a, b);
-      }
-      expected.existence = r.existence;
-      expected.snr = r.snr;
-      expected.confirmed = 1;
-      expected.measurement_index = r.measurement_index;
+      write_c_track(e.tracks[i], expected);
       CHECK(std::memcmp(&tracks[i], &expected, sizeof(mptrack_track)) == 0);
     }
     provisional_tracks += n;

@@ -33,6 +33,12 @@ std::unique_ptr<Tracker> make_tracker(std::size_t window, std::size_t slide) {
   return trk;
 }
 
+// Scan k of the scene into scan, stepped into trk (accepted).
+void step_scene(Tracker& trk, mfbp_test::Lcg& rng, int k, ScanT& scan) {
+  mfbp_test::make_scan(rng, k, kClutter, scan);
+  REQUIRE(trk.step(scan) != Status::kOutOfOrder);
+}
+
 // 3 sigma of the measurement noise in Cartesian at ~23 km (cross-range dominates).
 constexpr double kThreeSigma = 3.0 * 250.0;
 
@@ -49,8 +55,7 @@ TEST_CASE("mfbp provisional: a window every scan gives the newest scan's estimat
   mfbp_test::Lcg rng;
   auto scan = std::make_unique<ScanT>();
   for (int k = 0; k < 20; ++k) {
-    mfbp_test::make_scan(rng, k, kClutter, *scan);
-    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    step_scene(*trk, rng, k, *scan);
     // Scans 0..5 fill the window; from scan 6 on every step runs a window.
     CHECK(trk->has_provisional() == (k >= 6));
     if (trk->has_provisional()) {
@@ -67,8 +72,7 @@ TEST_CASE("mfbp provisional: with slide 3 it is computed on window steps and pre
   Tracker::Estimate previous;
   std::size_t predicted_tracks = 0;
   for (int k = 0; k < 20; ++k) {
-    mfbp_test::make_scan(rng, k, kClutter, *scan);
-    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    step_scene(*trk, rng, k, *scan);
     // The first window runs at scan 6, then every third scan (9, 12, ...).
     const bool window_ran = k >= 6 && (k - 6) % 3 == 0;
     REQUIRE(trk->has_provisional() == (k >= 6));
@@ -102,8 +106,7 @@ TEST_CASE("mfbp provisional: the online filter has none, its outputs have no lag
   mfbp_test::Lcg rng;
   auto scan = std::make_unique<ScanT>();
   for (int k = 0; k < 10; ++k) {
-    mfbp_test::make_scan(rng, k, kClutter, *scan);
-    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    step_scene(*trk, rng, k, *scan);
     CHECK_FALSE(trk->has_provisional());
     REQUIRE(trk->outputs().size() == 1u);
     CHECK(trk->outputs()[0].scan_index == static_cast<std::uint32_t>(k));
@@ -115,19 +118,16 @@ TEST_CASE("mfbp provisional: flush() and a refused scan leave none, and none is 
   mfbp_test::Lcg rng;
   auto scan = std::make_unique<ScanT>();
   for (int k = 0; k < 8; ++k) {
-    mfbp_test::make_scan(rng, k, kClutter, *scan);
-    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    step_scene(*trk, rng, k, *scan);
   }
   REQUIRE(trk->has_provisional());
   CHECK(trk->step(*scan) == Status::kOutOfOrder);  // the same time stamp again
   CHECK_FALSE(trk->has_provisional());
-  mfbp_test::make_scan(rng, 8, kClutter, *scan);
-  REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+  step_scene(*trk, rng, 8, *scan);
   REQUIRE(trk->has_provisional());
   CHECK(trk->flush() == Status::kOk);
   CHECK_FALSE(trk->has_provisional());
-  mfbp_test::make_scan(rng, 9, kClutter, *scan);  // a new window starts: nothing to predict
-  REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+  step_scene(*trk, rng, 9, *scan);  // a new window starts: nothing to predict
   CHECK_FALSE(trk->has_provisional());
 }
 
@@ -137,8 +137,7 @@ TEST_CASE("mfbp provisional: its confirmed tracks are on the targets at lag 0, o
   auto scan = std::make_unique<ScanT>();
   int covered[2] = {0, 0}, false_reports = 0, provisional_scans = 0;
   for (int k = 0; k < 40; ++k) {
-    mfbp_test::make_scan(rng, k, kClutter, *scan);
-    REQUIRE(trk->step(*scan) != Status::kOutOfOrder);
+    step_scene(*trk, rng, k, *scan);
     if (k < 12 || !trk->has_provisional()) continue;
     ++provisional_scans;
     int near[2] = {0, 0};
