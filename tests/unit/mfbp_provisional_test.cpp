@@ -88,8 +88,8 @@ TEST_CASE("mfbp provisional: with slide 3 it is computed on window steps and pre
         const auto& a = previous.tracks[i];
         const auto& b = e.tracks[i];
         CHECK(b.id == a.id);
-        CHECK(b.state(0) == doctest::Approx(a.state(0) + 1.25f * a.state(1)));
-        CHECK(b.state(2) == doctest::Approx(a.state(2) + 1.25f * a.state(3)));
+        CHECK(static_cast<double>(b.state(0)) == doctest::Approx(static_cast<double>(a.state(0) + 1.25f * a.state(1))));
+        CHECK(static_cast<double>(b.state(2)) == doctest::Approx(static_cast<double>(a.state(2) + 1.25f * a.state(3))));
         CHECK(b.state(1) == a.state(1));
         CHECK(b.covariance(0, 0) > a.covariance(0, 0));
         CHECK(b.measurement_index == -1);
