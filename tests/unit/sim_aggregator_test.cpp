@@ -412,13 +412,13 @@ TEST_CASE("sim aggregator: real-time OSPA averages the evaluation scans that hav
   const std::vector<sc::SimScan> scans = {scan_with(1, 0), scan_with(2, 0), scan_with(3, 0)};
   const std::vector<ScanMetrics> m = {metrics(1, 1, 0, 0), metrics(1, 1, 0, 0), metrics(1, 1, 0, 0)};
   RunRecord a = record(0, {1, 2, 3}, {0, 0, 0});
-  a.realtime_by_scan = a.by_scan;
-  a.realtime_by_scan[1].reported_after_scan = 2;
-  a.realtime_by_scan[2].reported_after_scan = 3;
+  a.provisional_by_scan = a.by_scan;
+  a.provisional_by_scan[1].reported_after_scan = 2;
+  a.provisional_by_scan[2].reported_after_scan = 3;
   const std::vector<ScanMetrics> ra = {metrics(900, 1, 0, 0), metrics(40, 1, 1, 0), metrics(60, 1, 1, 0)};
   RunRecord b = record(1, {1, 2, 3}, {0, 0, 0});
-  b.realtime_by_scan = b.by_scan;
-  b.realtime_by_scan[2].reported_after_scan = 3;
+  b.provisional_by_scan = b.by_scan;
+  b.provisional_by_scan[2].reported_after_scan = 3;
   const std::vector<ScanMetrics> rb = {metrics(900, 1, 0, 0), metrics(500, 1, 0, 0), metrics(80, 1, 1, 0)};
   agg.add_run(scans, a, m, &ra);
   agg.add_run(scans, b, m, &rb);
@@ -428,18 +428,18 @@ TEST_CASE("sim aggregator: real-time OSPA averages the evaluation scans that hav
   CHECK(s.mean_ospa == doctest::Approx(1.0));
 }
 
-TEST_CASE("sim run loop: the real-time stream holds each step's own scan, final or provisional") {
+TEST_CASE("sim run loop: provisional_by_scan holds the provisional estimate each step handed out for its own scan") {
   const std::unique_ptr<MeasurementSource> owned = five_scans();
   MeasurementSource& source = *owned;
   LaggingTracker lag;  // finalises scan k after step k + 2: never its own scan in time
   const RunRecord plain = run_tracker(source, lag, 0, nullptr);
-  REQUIRE(plain.realtime_by_scan.size() == 5);
-  for (const EstimateOut& e : plain.realtime_by_scan) CHECK(e.reported_after_scan == 0);
+  REQUIRE(plain.provisional_by_scan.size() == 5);
+  for (const EstimateOut& e : plain.provisional_by_scan) CHECK(e.reported_after_scan == 0);
   CHECK(plain.provisional_steps == 0);
   ProvisionalTracker prov;
   const RunRecord rec = run_tracker(source, prov, 0, nullptr);
-  REQUIRE(rec.realtime_by_scan.size() == 5);
+  REQUIRE(rec.provisional_by_scan.size() == 5);
   const std::uint32_t expected[5] = {0, 2, 0, 4, 0};  // scans 2 and 4, handed out after their own step
-  for (std::uint32_t k = 1; k <= 5; ++k) CHECK(rec.realtime_by_scan[k - 1].reported_after_scan == expected[k - 1]);
+  for (std::uint32_t k = 1; k <= 5; ++k) CHECK(rec.provisional_by_scan[k - 1].reported_after_scan == expected[k - 1]);
   CHECK(rec.provisional_steps == 2);
 }

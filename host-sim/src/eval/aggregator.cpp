@@ -79,8 +79,8 @@ Aggregator::Aggregator(const SummaryHeader& h) {
 }
 
 void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunRecord& rec,
-                         const std::vector<ScanMetrics>& metrics, const std::vector<ScanMetrics>* realtime) {
-  if (realtime != nullptr) add_realtime(rec, *realtime);
+                         const std::vector<ScanMetrics>& metrics, const std::vector<ScanMetrics>* provisional) {
+  add_realtime(rec, metrics, provisional);
   for (const std::uint32_t k : rec.delivered) {
     const scenario::SimScan& s = scans[k - 1];
     measurements_ += static_cast<double>(s.measurements.size());
@@ -119,14 +119,17 @@ void Aggregator::add_run(const std::vector<scenario::SimScan>& scans, const RunR
   sum_.ospa_mahalanobis_per_run.push_back(run_mean(run_ospa_mahalanobis));
   tracks_found_ += static_cast<double>(found.size());
   add_object_errors(scans, metrics);
-  sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring, &rec.realtime_by_scan));
+  sum_.track_scores.add(score_run(scans, rec.by_scan, sum_.scoring, &rec.provisional_by_scan));
 }
 
-void Aggregator::add_realtime(const RunRecord& rec, const std::vector<ScanMetrics>& realtime) {
-  const std::size_t n = std::min(realtime.size(), rec.realtime_by_scan.size());
-  for (std::uint32_t k = sum_.eval_first_scan; k <= sum_.eval_last_scan && k <= n; ++k) {
-    if (k == 0 || rec.realtime_by_scan[k - 1].reported_after_scan == 0) continue;  // no estimate of scan k in time
-    realtime_ospa_ += realtime[k - 1].ospa;
+void Aggregator::add_realtime(const RunRecord& rec, const std::vector<ScanMetrics>& metrics,
+                              const std::vector<ScanMetrics>* provisional) {
+  for (std::uint32_t k = sum_.eval_first_scan; k <= sum_.eval_last_scan && k <= metrics.size(); ++k) {
+    const EstimateOut* e = realtime_estimate(rec, k);
+    if (e == nullptr) continue;  // no estimate of scan k in time
+    const bool is_provisional = k <= rec.provisional_by_scan.size() && e == &rec.provisional_by_scan[k - 1];
+    if (is_provisional && (provisional == nullptr || k > provisional->size())) continue;  // not evaluated
+    realtime_ospa_ += is_provisional ? (*provisional)[k - 1].ospa : metrics[k - 1].ospa;
     ++realtime_scans_;
   }
 }

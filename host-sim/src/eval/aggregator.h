@@ -50,8 +50,8 @@ struct Summary : SummaryHeader {
   double mean_ospa = 0.0;       ///< over runs x evaluation scans [m]
   double mean_gospa = 0.0;      ///< [m]
   double mean_ospa_mahalanobis = 0.0;  ///< MOSPA with the Mahalanobis base distance (seed 003) [-]
-  /// OSPA of the real-time stream (RunRecord::realtime_by_scan: each step's
-  /// estimate of its own scan) over the evaluation scans that have one [m];
+  /// OSPA of the real-time stream (realtime_estimate, run/run_record.h: each
+  /// step's estimate of its own scan) over the evaluation scans that have one [m];
   /// mean_ospa for a filter, the provisional output's for a smoother.
   double mean_realtime_ospa = 0.0;
   double realtime_scan_fraction = 0.0;  ///< evaluation scans with a real-time estimate / all of them
@@ -109,16 +109,17 @@ class Aggregator {
   explicit Aggregator(const SummaryHeader& header);
   /// Adds one run: its scans (truth and measurements), the tracker's record
   /// and the evaluator's metrics of every scan (index scan-1).
-  /// realtime (optional): the evaluator's metrics of record.realtime_by_scan
-  /// (index scan-1), for mean_realtime_ospa.
+  /// provisional: the evaluator's metrics of record.provisional_by_scan
+  /// (index scan-1), or nullptr if the tracker handed out none.
   void add_run(const std::vector<scenario::SimScan>& scans, const RunRecord& record,
-               const std::vector<ScanMetrics>& metrics, const std::vector<ScanMetrics>* realtime = nullptr);
+               const std::vector<ScanMetrics>& metrics, const std::vector<ScanMetrics>* provisional = nullptr);
   /// Means over everything added so far.
   Summary summary() const;
 
  private:
   void add_eval_scan(const ScanMetrics& m);
-  void add_realtime(const RunRecord& record, const std::vector<ScanMetrics>& realtime);
+  void add_realtime(const RunRecord& record, const std::vector<ScanMetrics>& metrics,
+                    const std::vector<ScanMetrics>* provisional);
   void add_object_errors(const std::vector<scenario::SimScan>& scans, const std::vector<ScanMetrics>& metrics);
 
   Summary sum_;  ///< header, tallies and counts; means are formed in summary()

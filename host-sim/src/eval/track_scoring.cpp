@@ -134,9 +134,11 @@ struct TargetFollower {
   std::uint32_t last_track = 0;
   bool has_last = false, covered_last_scan = false;
 
-  /// reported_after: the scan after which scan k's estimate was handed out.
-  void scan(std::uint32_t k, std::uint32_t reported_after, const scenario::TruthState& truth, const TrackOut* track,
-            const ScanAssignment& now) {
+  /// reported_after: the scan after which scan k's estimate was handed out;
+  /// realtime: that estimate is scan k's real-time one (handed out by its own
+  /// step, no provisional estimate instead).
+  void scan(std::uint32_t k, std::uint32_t reported_after, bool realtime, const scenario::TruthState& truth,
+            const TrackOut* track, const ScanAssignment& now) {
     ++score.alive_scans;
     const bool settled = k >= score.birth_scan + kSettleScans;
     if (settled) ++score.settled_scans;
@@ -147,6 +149,7 @@ struct TargetFollower {
     ++score.covered_scans;
     if (settled) ++score.settled_covered_scans;
     if (score.first_covered_scan < 0) score.first_covered_scan = static_cast<std::int32_t>(k);
+    if (realtime && score.first_realtime_scan < 0) score.first_realtime_scan = static_cast<std::int32_t>(k);
     const auto reported = static_cast<std::int32_t>(reported_after);
     if (score.first_reported_scan < 0 || reported < score.first_reported_scan) score.first_reported_scan = reported;
     if (has_last && track->id != last_track) {
@@ -216,22 +219,22 @@ std::uint32_t count_false_in_clutter(const std::vector<EstimateOut>& by_scan, st
   return count;
 }
 
-/// TargetScore::first_realtime_scan of every followed target: the first
-/// scan of `realtime` on which a confirmed track that the final estimates
-/// score as valid (classify_tracks, as coverage requires) is assigned to it
-/// (match_scan among those tracks only); a track never handed out final, or
-/// false, takes no part.
-void mark_first_realtime(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& realtime,
+/// Lowers TargetScore::first_realtime_scan of every followed target to the
+/// first scan of `provisional` on which a confirmed track that the final
+/// estimates score as valid (classify_tracks, as coverage requires) is
+/// assigned to it (match_scan among those tracks only); a track never handed
+/// out final, or false, takes no part.
+void mark_first_provisional(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& provisional,
                          const TrackScoringParams& params, const std::map<std::uint32_t, bool>& valid,
                          ScoringSolver& solver, const std::map<std::uint32_t, std::size_t>& index,
                          std::vector<TargetFollower>& followers) {
   const double all = -std::numeric_limits<double>::infinity();
-  const std::size_t n = std::min(scans.size(), realtime.size());
+  const std::size_t n = std::min(scans.size(), provisional.size());
   ScanAssignment previous;
   EstimateOut scored;
   for (std::size_t i = 0; i < n; ++i) {
     scored.tracks.clear();
-    for (const TrackOut& t : realtime[i].tracks) {
+    for (const TrackOut& t : provisional[i].tracks) {
       const auto v = valid.find(t.id);
       if (v != valid.end() && v->second) scored.tracks.push_back(t);
     }
@@ -240,7 +243,8 @@ void mark_first_realtime(const std::vector<scenario::SimScan>& scans, const std:
       const auto f = index.find(target_id);
       if (target_id == kNoTarget || f == index.end()) continue;
       TargetScore& score = followers[f->second].score;
-      if (score.first_realtime_scan < 0) score.first_realtime_scan = static_cast<std::int32_t>(i + 1);
+      const auto k = static_cast<std::int32_t>(i + 1);
+      if (score.first_realtime_scan < 0 || k < score.first_realtime_scan) score.first_realtime_scan = k;
     }
   }
 }
@@ -248,7 +252,7 @@ void mark_first_realtime(const std::vector<scenario::SimScan>& scans, const std:
 }  // namespace
 
 RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
-                        const TrackScoringParams& params, const std::vector<EstimateOut>* realtime) {
+                        const TrackScoringParams& params, const std::vector<EstimateOut>* provisional) {
   const std::size_t n = std::min(scans.size(), by_scan.size());
   auto solver = std::make_unique<ScoringSolver>();  // a 256 x 256 cost matrix: heap, not stack
   std::vector<ScanAssignment> per_scan(n);
@@ -282,10 +286,14 @@ RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::
         }
       }
       const std::uint32_t reported_after = by_scan[i].reported_after_scan > 0 ? by_scan[i].reported_after_scan : k;
-      followers[index[truth.target_id]].scan(k, reported_after, truth, covering, per_scan[i]);
+      // Real time: a final estimate its own step handed out, unless that step's provisional one stands for it.
+      const bool provisional_here = provisional != nullptr && i < provisional->size() &&
+                                    (*provisional)[i].reported_after_scan == k;
+      const bool realtime = by_scan[i].reported_after_scan == k && !provisional_here;
+      followers[index[truth.target_id]].scan(k, reported_after, realtime, truth, covering, per_scan[i]);
     }
   }
-  if (realtime != nullptr) mark_first_realtime(scans, *realtime, params, valid, *solver, index, followers);
+  if (provisional != nullptr) mark_first_provisional(scans, *provisional, params, valid, *solver, index, followers);
   for (const TargetFollower& f : followers) run.targets.push_back(f.score);
   const AmotaScore amota = run_amota(scans, by_scan, AmotaParams{params.gate_m, kAmotaRecallPoints}, *solver);
   run.amota = amota.normalised;

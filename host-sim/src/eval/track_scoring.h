@@ -72,8 +72,9 @@ struct TargetScore {
   /// (EstimateOut::reported_after_scan of the covered scans, earliest); -1: never.
   std::int32_t first_reported_scan = -1;
   /// The first scan k whose own step() handed out, for scan k, a confirmed
-  /// track assigned to it (RunRecord::realtime_by_scan: a filter's estimate
-  /// or a smoother's provisional one); -1: never, or no such stream scored.
+  /// track assigned to it (realtime_estimate in run/run_record.h: a filter's
+  /// final estimate, stamped reported_after_scan == k, or a smoother's
+  /// provisional one); -1: never.
   std::int32_t first_realtime_scan = -1;
   std::uint32_t id_switches = 0;     ///< its assigned track id changed (from the last one it had)
   std::uint32_t fragmentations = 0;  ///< coverage resumed after an interruption
@@ -121,10 +122,13 @@ ScanAssignment match_scan(const scenario::SimScan& scan, const EstimateOut& est,
 /// distance gated at params.gate_m, keeping the previous scan's pairs that
 /// are still within the gate when params.keep_pairs. Throws std::runtime_error if a scan has
 /// more than 256 tracks or targets.
-/// realtime (optional, index scan-1): the estimates each step handed out
-/// for its own scan, which set TargetScore::first_realtime_scan.
+/// TargetScore::first_realtime_scan comes from the final estimates that their
+/// own step handed out (reported_after_scan == their scan) and from
+/// provisional (optional, index scan-1: the provisional estimates steps
+/// handed out for their own scan, RunRecord::provisional_by_scan; a stamped
+/// entry stands for its scan's final estimate).
 RunTrackScore score_run(const std::vector<scenario::SimScan>& scans, const std::vector<EstimateOut>& by_scan,
-                        const TrackScoringParams& params, const std::vector<EstimateOut>* realtime = nullptr);
+                        const TrackScoringParams& params, const std::vector<EstimateOut>* provisional = nullptr);
 
 /// Totals over runs; the means scripts read from summary.json.
 struct TrackScoreTotals {

@@ -69,22 +69,15 @@ void check_loop_config(const LoopConfig& cfg) {
 
 namespace {
 
-/// The estimate of the step's own scan (tracker numbering: the step count)
-/// that a step handed out, final (among finals[from..]) or provisional, appended to realtime.
-void keep_realtime(const std::vector<EstimateOut>& finals, std::size_t from, const TrackerAdapter& tracker,
-                   std::uint32_t step_scan, std::uint32_t source_scan, std::vector<EstimateOut>& realtime,
-                   std::uint32_t& provisional_steps) {
-  for (std::size_t i = from; i < finals.size(); ++i) {
-    if (finals[i].scan == step_scan) {
-      realtime.push_back(finals[i]);
-      return;
-    }
-  }
+/// The provisional estimate of the step's own scan (tracker numbering: the
+/// step count), if the tracker handed one out, stamped with the source scan
+/// and appended to provisionals.
+void keep_provisional(const TrackerAdapter& tracker, std::uint32_t step_scan, std::uint32_t source_scan,
+                      std::vector<EstimateOut>& provisionals) {
   EstimateOut p;
   if (!tracker.provisional(p) || p.scan != step_scan) return;
   p.reported_after_scan = source_scan;
-  realtime.push_back(std::move(p));
-  ++provisional_steps;
+  provisionals.push_back(std::move(p));
 }
 
 }  // namespace
@@ -95,7 +88,7 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
   rec.run = run;
   rec.latency_us.assign(n, 0.0);
   std::vector<EstimateOut> finals;
-  std::vector<EstimateOut> realtime;  // at most one per step: that step's own scan (RunRecord::realtime_by_scan)
+  std::vector<EstimateOut> provisionals;  // at most one per step: that step's own scan
   const FrameInput input = tracker.frame_input();
   // A step()/flush() during which the mixture truncation count grew (RunRecord::steps_truncating).
   std::uint64_t truncated = tracker.counters().mixture_truncated;
@@ -115,8 +108,7 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
     const Status st = frame != nullptr ? tracker.step_frame(*frame, s, finals) : tracker.step(s, finals);
     const auto t1 = std::chrono::steady_clock::now();
     stamp(before, s.scan);
-    keep_realtime(finals, before, tracker, static_cast<std::uint32_t>(rec.delivered.size()), s.scan, realtime,
-                  rec.provisional_steps);
+    keep_provisional(tracker, static_cast<std::uint32_t>(rec.delivered.size()), s.scan, provisionals);
     count_truncation();
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     rec.latency_us[s.scan - 1] = us;
@@ -130,7 +122,8 @@ RunRecord run_tracker(ScanSource& source, TrackerAdapter& tracker, std::uint32_t
   count_truncation();
   rec.counters = tracker.counters();
   rec.by_scan = estimates_by_scan(finals, rec.delivered, n);
-  rec.realtime_by_scan = estimates_by_scan(realtime, rec.delivered, n);
+  rec.provisional_steps = static_cast<std::uint32_t>(provisionals.size());
+  rec.provisional_by_scan = estimates_by_scan(provisionals, rec.delivered, n);
   return rec;
 }
 
@@ -152,11 +145,11 @@ std::vector<Summary> run_loop(ScanSource& source, const LoopConfig& cfg, const s
       std::unique_ptr<TrackerAdapter> tracker = make_initialised(cfg, cfg.trackers[t], spec);
       const RunRecord rec = run_tracker(source, *tracker, run, &progress);
       const std::vector<ScanMetrics> metrics = evaluator.evaluate_run(source.scans(), rec.by_scan);
-      // The real-time stream is the final one unless the tracker handed out provisional estimates.
-      const std::vector<ScanMetrics> realtime =
-          rec.provisional_steps > 0 ? evaluator.evaluate_run(source.scans(), rec.realtime_by_scan)
+      // Only a tracker that handed out provisional estimates has a real-time stream to evaluate apart.
+      const std::vector<ScanMetrics> provisional =
+          rec.provisional_steps > 0 ? evaluator.evaluate_run(source.scans(), rec.provisional_by_scan)
                                     : std::vector<ScanMetrics>{};
-      aggregators[t].add_run(source.scans(), rec, metrics, rec.provisional_steps > 0 ? &realtime : &metrics);
+      aggregators[t].add_run(source.scans(), rec, metrics, rec.provisional_steps > 0 ? &provisional : nullptr);
       for (RunObserver* o : observers) o->on_run(t, source.scans(), rec, metrics);
     }
   }

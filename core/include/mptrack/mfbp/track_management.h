@@ -104,9 +104,8 @@ void confirm_tracks(TrackTable<T, Caps>& tracks, std::size_t n, std::size_t look
       ++counters.tracks_confirmed;
       continue;
     }
-    const bool in_clutter = held_to_clutter_threshold(t, p);
-    const T threshold = in_clutter ? p.confirm_threshold_in_clutter : p.confirm_threshold;
-    const std::size_t last = in_clutter ? n - lookahead : n;
+    const T threshold = confirmation_threshold(t, p);
+    const std::size_t last = held_to_clutter_threshold(t, p) ? n - lookahead : n;
     for (std::size_t k = t.first; k < last; ++k) {
       if (t.vis[k] >= threshold) {
         t.confirmed = true;
