@@ -63,6 +63,7 @@ const Flag kFlags[] = {
     {"unresolved_taper", [](P& p) -> bool& { return p.unresolved_taper; }},
     {"association_cavity", [](P& p) -> bool& { return p.association_cavity; }},
     {"late_birth", [](P& p) -> bool& { return p.late_birth; }},
+    {"retire_in_new_clutter", [](P& p) -> bool& { return p.retire_in_new_clutter; }},
     {"amplitude.use_amplitude", [](P& p) -> bool& { return p.amplitude.use_amplitude; }},
     {"use_doppler", [](P& p) -> bool& { return p.use_doppler; }},
     {"tentative_predictive_in_clutter", [](P& p) -> bool& { return p.tentative_predictive_in_clutter; }},

@@ -319,6 +319,11 @@ struct MfbpParams {
   T clutter_cell_range_m = T(2000);   ///< birth grid cell size in range [m]
   T clutter_cell_az_rad = T(0.06981317007977318);  ///< birth grid cell size in azimuth [rad] (4 deg)
   T clutter_seed_factor = T(10);      ///< seed if count >= max(2 n_scans, factor * mu_cell)
+  bool retire_in_new_clutter = true;  ///< Ours. A new component deletes the tracks born on the
+                                      ///< scans it was seeded from whose state lies in its gate:
+                                      ///< a cloud's points start tracks until it is a component
+                                      ///< (docs/algorithms/mfbp.md §Birth, tracks a new component
+                                      ///< explains). false: the paper's behaviour
   T clutter_death_count = T(2);       ///< component dies if M_tau < this per scan ... [-]
   std::size_t clutter_death_windows = 2;  ///< ... on all finalised scans of this many windows
 

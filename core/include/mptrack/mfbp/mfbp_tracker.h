@@ -288,6 +288,7 @@ class MfbpTracker {
                              counters_);
     }
     mf_sweep(n);
+    if (estimate_clutter() && params_.clutter_birth && params_.retire_in_new_clutter) retire_explained_tracks(n);
     for (std::size_t l = 0; l < params_.mp_max_iterations; ++l) {
       T delta = T(0);
       for (std::size_t k = 0; k < n; ++k) {
@@ -313,6 +314,16 @@ class MfbpTracker {
       provisional_base_ = true;
     }
     shift_window(finalize_count);
+  }
+
+  // The tracks the components born by this window's spawn explain
+  // (mfbp::retire_tracks_in_new_component); after a sweep, so every track
+  // has a state on the newest window scan.
+  void retire_explained_tracks(std::size_t n) {
+    for (std::size_t i = 0; i < clutter_spawner_.born_count(); ++i) {
+      const auto& nc = clutter_spawner_.born(i);
+      mfbp::retire_tracks_in_new_component(tracks_, clutter_.comps[nc.slot], nc.seed_scans, n, params_, counters_);
+    }
   }
 
   // One MF sweep (seed 000 Algorithm 1 lines 4-7): Dirichlet, clutter,

@@ -208,6 +208,32 @@ void suppress_duplicates(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpP
   }
 }
 
+/// Tracks that a newly born clutter component explains (docs/algorithms/
+/// mfbp.md §Birth, tracks a new component explains; ours;
+/// retire_in_new_clutter): alive on at most seed_scans scans up to the
+/// newest window scan n - 1, i.e. born on the scans the component was seeded
+/// from, and inside its gate (clutter_gate_chi2 under E[D^-1]) there. Before
+/// the cloud was a component its points were unexplained, so they started
+/// tracks; now they are clutter, and such a track has no evidence of its
+/// own. A target tracked from before those scans is older and kept.
+/// Deleted tracks are counted in tracks_deleted.
+template <class T, class Caps>
+void retire_tracks_in_new_component(TrackTable<T, Caps>& tracks, const CompSlot<T, Caps>& cs, std::size_t seed_scans,
+                                    std::size_t n, const MfbpParams<T>& p, TrackerCounters& counters) {
+  if (n == 0 || !cs.alive) return;
+  const NormalWishart<T>& nw = cs.nws[n - 1];
+  const model::Mahalanobis2<T> gate(nw.expected_covariance());
+  if (!gate.valid()) return;
+  for (auto& t : tracks) {
+    // Scans lived up to n - 1: the finalised ones (age) and its window scans.
+    if (!t.alive || t.first >= n || t.age + (n - t.first) > seed_scans) continue;
+    const Vec2<T> z = model::polar_of_state(t.xs[n - 1]);
+    if (gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > p.clutter_gate_chi2) continue;
+    t.alive = false;
+    ++counters.tracks_deleted;
+  }
+}
+
 /// Component death after a window whose first fc scans are finalised.
 template <class T, class Caps>
 void manage_components(ClutterTable<T, Caps>& cl, std::size_t fc, const MfbpParams<T>& p,
