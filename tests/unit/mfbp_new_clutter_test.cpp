@@ -121,6 +121,22 @@ TEST_CASE("mfbp new clutter: a track born before the component's scans is kept")
   CHECK(n.tracks_deleted == 0u);
 }
 
+TEST_CASE("mfbp new clutter: a young track already held to the in-clutter threshold is kept") {
+  // It scored measurements with the predictive density inside a weaker
+  // component (a component there died and is born again): the rules for
+  // young tracks inside clutter decide it, not the new component.
+  auto t = std::make_unique<Table>();
+  put(*t, 0, 1, 4, 25000.0);
+  (*t)[0].predictive_evidence = true;
+  MfbpParams<double> p;
+  REQUIRE(p.tentative_predictive_in_clutter);
+  REQUIRE(p.confirm_threshold_in_clutter > p.confirm_threshold);
+  TrackerCounters n;
+  retire_tracks_in_new_component(*t, component(), 4, 7, p, n);
+  CHECK((*t)[0].alive);
+  CHECK(n.tracks_deleted == 0u);
+}
+
 TEST_CASE("mfbp new clutter: finalised scans count toward a track's life") {
   // Online filter (window of 1): a track with 3 finalised scans has lived 4
   // scans at the new one, within 7 seed scans; with 6 it has lived 7, and

@@ -215,8 +215,11 @@ void suppress_duplicates(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpP
 /// from, and inside its gate (clutter_gate_chi2 under E[D^-1]) there. Before
 /// the cloud was a component its points were unexplained, so they started
 /// tracks; now they are clutter, and such a track has no evidence of its
-/// own. A target tracked from before those scans is older and kept.
-/// Deleted tracks are counted in tracks_deleted.
+/// own. A target tracked from before those scans is older and kept, and so
+/// is a track already held_to_clutter_threshold: it was scored against a
+/// component there before (a component that died and is born again), and
+/// the rules for young tracks inside clutter decide it. Deleted tracks are
+/// counted in tracks_deleted.
 template <class T, class Caps>
 void retire_tracks_in_new_component(TrackTable<T, Caps>& tracks, const CompSlot<T, Caps>& cs, std::size_t seed_scans,
                                     std::size_t n, const MfbpParams<T>& p, TrackerCounters& counters) {
@@ -226,7 +229,7 @@ void retire_tracks_in_new_component(TrackTable<T, Caps>& tracks, const CompSlot<
   if (!gate.valid()) return;
   for (auto& t : tracks) {
     // Scans lived up to n - 1: the finalised ones (age) and its window scans.
-    if (!t.alive || t.first >= n || t.age + (n - t.first) > seed_scans) continue;
+    if (!t.alive || t.first >= n || t.age + (n - t.first) > seed_scans || held_to_clutter_threshold(t, p)) continue;
     const Vec2<T> z = model::polar_of_state(t.xs[n - 1]);
     if (gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > p.clutter_gate_chi2) continue;
     t.alive = false;
