@@ -150,7 +150,7 @@ void fuzz_mfbp(FuzzReader& in) {
   mutate(in, p.report_existence_min); mutate(in, p.clutter_birth); mutate(in, p.clutter_cell_range_m);
   mutate(in, p.clutter_cell_az_rad); mutate(in, p.clutter_seed_factor);
   mutate(in, p.clutter_death_count); mutate(in, p.clutter_death_windows);
-  mutate(in, p.retire_in_new_clutter);
+  mutate(in, p.retire_in_new_clutter); mutate(in, p.birth_in_clutter_max_cnr);
   if (p.bp_max_iterations > 200) return;  // time bound only (valid, but slow)
   if (g_mfbp.init(p) != Status::kOk) return;
   run_scans(g_mfbp, p.region.range_min_m, p.region.range_max_m, p.region.azimuth_min_rad,

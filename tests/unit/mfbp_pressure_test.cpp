@@ -126,7 +126,7 @@ namespace {
 
 /// The filter on a known map with one dense component (30 per scan, CNR 4)
 /// at 30 km, 0.6 rad and no uniform clutter beyond the floor.
-MfbpParams<float> known_component_params(float single_point_tail) {
+MfbpParams<float> known_component_params(float single_point_tail, float max_cnr) {
   MfbpParams<float> p = filter_params();
   p.clutter_mode = ClutterMode::kKnownMap;
   p.known_clutter.uniform_rate_per_scan = 0.0f;
@@ -137,13 +137,15 @@ MfbpParams<float> known_component_params(float single_point_tail) {
   c.covariance << 500.0f * 500.0f, 0.0f, 0.0f, 0.05f * 0.05f;
   c.cnr = 4.0f;
   p.birth_single_point_tail = single_point_tail;
+  p.birth_in_clutter_max_cnr = max_cnr;
   return p;
 }
 
-/// One scan: a single detection at the component's centre of amplitude m.
-std::uint64_t births_after_one_point(float single_point_tail, float m) {
+/// One scan: a single detection at the component's centre of amplitude m
+/// (birth_in_clutter_max_cnr: max_cnr, 0 = no limit).
+std::uint64_t births_after_one_point(float single_point_tail, float m, float max_cnr = 0.0f) {
   static MfbpTracker<float, PressureCaps<4>> trk;
-  REQUIRE(trk.init(known_component_params(single_point_tail)) == Status::kOk);
+  REQUIRE(trk.init(known_component_params(single_point_tail, max_cnr)) == Status::kOk);
   Scan<float, 16> scan;
   scan.time_us = 1000000u;
   Measurement<float> z;
@@ -166,4 +168,12 @@ TEST_CASE("mfbp one-point birth inside clutter: a strong lone detection starts a
   // m = 2: tail exp(-(4 - 0.511) / 5) = 0.50, not below 0.1 (nor below the
   // pair test's 0.2): no birth.
   CHECK(births_after_one_point(0.1f, 2.0f) == 0);
+}
+
+TEST_CASE("mfbp birth inside clutter: no amplitude birth under a component stronger than birth_in_clutter_max_cnr") {
+  // The CNR-4 component of above and m = 5 (tail 0.0075): a cap of 5 or
+  // exactly 4 leaves the birth, a cap of 3.9 makes the point explained.
+  CHECK(births_after_one_point(0.1f, 5.0f, 5.0f) == 1);
+  CHECK(births_after_one_point(0.1f, 5.0f, 4.0f) == 1);
+  CHECK(births_after_one_point(0.1f, 5.0f, 3.9f) == 0);
 }

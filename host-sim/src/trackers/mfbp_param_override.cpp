@@ -35,6 +35,7 @@ const Real kReals[] = {
     {"birth_max_component_share", [](P& p) -> double& { return p.birth_max_component_share; }},
     {"birth_amplitude_tail", [](P& p) -> double& { return p.birth_amplitude_tail; }},
     {"birth_single_point_tail", [](P& p) -> double& { return p.birth_single_point_tail; }},
+    {"birth_in_clutter_max_cnr", [](P& p) -> double& { return p.birth_in_clutter_max_cnr; }},
     {"uniform_rate_floor_per_scan", [](P& p) -> double& { return p.uniform_rate_floor_per_scan; }},
     {"unexplained_threshold", [](P& p) -> double& { return p.unexplained_threshold; }},
     {"noise.range_std_m", [](P& p) -> double& { return p.noise.range_std_m; }},

@@ -241,6 +241,11 @@ struct MfbpParams {
                                       ///< birth_max_in_clutter left after the pairs
                                       ///< (docs/algorithms/mfbp.md §Birth). At most
                                       ///< birth_amplitude_tail; 0 = off [-]
+  T birth_in_clutter_max_cnr = T(0);  ///< Ours. The amplitude test above holds only under
+                                      ///< components of mean CNR at most this (linear): under
+                                      ///< a stronger one a target's amplitude is as likely as
+                                      ///< the clutter's and the point is explained
+                                      ///< (docs/algorithms/mfbp.md §Birth); 0 = no limit [-]
   std::size_t birth_max_in_clutter = 3;  ///< Ours. Births per window whose points passed only
                                          ///< by that amplitude test (inside Gaussian clutter)
   T confirm_threshold = T(0.75);      ///< confirm when b_s(1) >= this at any window scan [-]
@@ -455,6 +460,7 @@ Status MfbpParams<T>::validate(ParamError* where) const {
   MPTRACK_CHECK_PARAM(w, "birth_max_per_window", check_at_least(birth_max_per_window, 1));
   MPTRACK_CHECK_PARAM(w, "unexplained_threshold", check_open_probability(unexplained_threshold));
   MPTRACK_CHECK_PARAM(w, "birth_max_component_share", check_range(birth_max_component_share, T(0), T(1)));
+  MPTRACK_CHECK_PARAM(w, "birth_in_clutter_max_cnr", check_range(birth_in_clutter_max_cnr, T(0), T(1e6)));
   MPTRACK_CHECK_PARAM(w, "birth_single_point_tail",
                       check(birth_single_point_tail >= T(0) && !(birth_single_point_tail > birth_amplitude_tail)));
   MPTRACK_CHECK_PARAM(w, "birth_amplitude_tail",

@@ -147,7 +147,8 @@ class TrackSpawner {
   }
 
   /// The largest amplitude_tail of m under the Gaussian components whose
-  /// gate holds (r, az) (see clutter_mark); 1 if none gates it.
+  /// gate holds (r, az) (see clutter_mark); 1 if none gates it, and 1 under a
+  /// component of mean CNR above birth_in_clutter_max_cnr (when set).
   static T amplitude_tail_in_clutter(T r, T az, T m, std::size_t k_ref, std::uint64_t time_us,
                                      const ClutterTable<T, Caps>& cl, const MfbpParams<T>& p, int n_order) {
     const T d = p.amplitude.threshold;
@@ -158,7 +159,8 @@ class TrackSpawner {
       if (!gate.valid() || !(varsigma > T(0))) return;
       if (gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > p.clutter_gate_chi2) return;
       gated = true;
-      const T tail = amplitude_tail(m, d, varsigma, n_order);
+      const bool too_strong = p.birth_in_clutter_max_cnr > T(0) && varsigma - T(1) > p.birth_in_clutter_max_cnr;
+      const T tail = too_strong ? T(1) : amplitude_tail(m, d, varsigma, n_order);
       tail_max = tail > tail_max ? tail : tail_max;
     };
     for_each_gaussian_component(k_ref, time_us, cl, p, consider);
