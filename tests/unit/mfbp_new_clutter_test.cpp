@@ -19,6 +19,7 @@ namespace {
 
 using Table = TrackTable<double, DefaultCaps>;
 using Comp = CompSlot<double, DefaultCaps>;
+using Clutter = ClutterTable<double, DefaultCaps>;
 
 /// A component centred at (25 km, 0.5 rad) with E[D^-1] = diag(1000 m, 0.02 rad)^2
 /// on every window scan (nu = 4, so E[D^-1] = W^-1).
@@ -33,6 +34,13 @@ Comp component() {
     nw.w_inv(1, 1) = 0.02 * 0.02;
   }
   return c;
+}
+
+/// A clutter table whose slot 0 is component() (the new one).
+std::unique_ptr<Clutter> table_with_new_component() {
+  auto cl = std::make_unique<Clutter>();
+  cl->comps[0] = component();
+  return cl;
 }
 
 /// Track `id` in slot i born on window scan `born`, at range r and azimuth
@@ -106,7 +114,7 @@ TEST_CASE("mfbp new clutter: a track born on the component's scans inside its ga
   auto t = std::make_unique<Table>();
   put(*t, 0, 1, 4, 25000.0);
   TrackerCounters n;
-  retire_tracks_in_new_component(*t, component(), 4, 7, MfbpParams<double>{}, n);
+  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, MfbpParams<double>{}, n);
   CHECK_FALSE((*t)[0].alive);
   CHECK(n.tracks_deleted == 1u);
 }
@@ -116,7 +124,7 @@ TEST_CASE("mfbp new clutter: a track born before the component's scans is kept")
   auto t = std::make_unique<Table>();
   put(*t, 0, 1, 2, 25000.0);
   TrackerCounters n;
-  retire_tracks_in_new_component(*t, component(), 4, 7, MfbpParams<double>{}, n);
+  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, MfbpParams<double>{}, n);
   CHECK((*t)[0].alive);
   CHECK(n.tracks_deleted == 0u);
 }
@@ -132,7 +140,7 @@ TEST_CASE("mfbp new clutter: a young track already held to the in-clutter thresh
   REQUIRE(p.tentative_predictive_in_clutter);
   REQUIRE(p.confirm_threshold_in_clutter > p.confirm_threshold);
   TrackerCounters n;
-  retire_tracks_in_new_component(*t, component(), 4, 7, p, n);
+  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, p, n);
   CHECK((*t)[0].alive);
   CHECK(n.tracks_deleted == 0u);
 }
@@ -149,11 +157,24 @@ TEST_CASE("mfbp new clutter: finalised scans count toward a track's life") {
   (*t)[1].age = 6;
   (*t)[2].age = 7;
   TrackerCounters n;
-  retire_tracks_in_new_component(*t, component(), 7, 1, MfbpParams<double>{}, n);
+  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 7, 1, MfbpParams<double>{}, n);
   CHECK_FALSE((*t)[0].alive);
   CHECK_FALSE((*t)[1].alive);
   CHECK((*t)[2].alive);
   CHECK(n.tracks_deleted == 2u);
+}
+
+TEST_CASE("mfbp new clutter: a young track inside an older component's gate is kept") {
+  // The new component (slot 1) seeded in the tail of a live one (slot 0,
+  // same centre): the track was already scored against clutter there.
+  auto t = std::make_unique<Table>();
+  put(*t, 0, 1, 4, 25000.0);
+  auto cl = table_with_new_component();
+  cl->comps[1] = component();
+  TrackerCounters n;
+  retire_tracks_in_new_component(*t, *cl, 1, 4, 7, MfbpParams<double>{}, n);
+  CHECK((*t)[0].alive);
+  CHECK(n.tracks_deleted == 0u);
 }
 
 TEST_CASE("mfbp new clutter: a young track just outside the component's gate is kept") {
@@ -163,7 +184,7 @@ TEST_CASE("mfbp new clutter: a young track just outside the component's gate is 
   put(*t, 0, 1, 4, 25000.0 + 1.01 * edge_m);
   put(*t, 1, 2, 4, 25000.0 + 0.99 * edge_m);
   TrackerCounters n;
-  retire_tracks_in_new_component(*t, component(), 4, 7, MfbpParams<double>{}, n);
+  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, MfbpParams<double>{}, n);
   CHECK((*t)[0].alive);
   CHECK_FALSE((*t)[1].alive);
   CHECK(n.tracks_deleted == 1u);

@@ -322,7 +322,7 @@ class MfbpTracker {
   void retire_explained_tracks(std::size_t n) {
     for (std::size_t i = 0; i < clutter_spawner_.born_count(); ++i) {
       const auto& nc = clutter_spawner_.born(i);
-      mfbp::retire_tracks_in_new_component(tracks_, clutter_.comps[nc.slot], nc.seed_scans, n, params_, counters_);
+      mfbp::retire_tracks_in_new_component(tracks_, clutter_, nc.slot, nc.seed_scans, n, params_, counters_);
     }
   }
 

@@ -208,6 +208,22 @@ void suppress_duplicates(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpP
   }
 }
 
+/// Is measurement-space point z in the gate (clutter_gate_chi2 under E[D^-1])
+/// of a live component other than `slot` on window scan k?
+template <class T, class Caps>
+bool in_other_component_gate(const Vec2<T>& z, const ClutterTable<T, Caps>& cl, std::size_t slot, std::size_t k,
+                             const MfbpParams<T>& p) {
+  for (std::size_t c = 0; c < ClutterTable<T, Caps>::kMaxComp; ++c) {
+    if (c == slot || !cl.comps[c].alive) continue;
+    const NormalWishart<T>& nw = cl.comps[c].nws[k];
+    const model::Mahalanobis2<T> gate(nw.expected_covariance());
+    if (gate.valid() && !(gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > p.clutter_gate_chi2)) {
+      return true;
+    }
+  }
+  return false;
+}
+
 /// Tracks that a newly born clutter component explains (docs/algorithms/
 /// mfbp.md §Birth, tracks a new component explains; ours;
 /// retire_in_new_clutter): alive on at most seed_scans scans up to the
@@ -216,13 +232,16 @@ void suppress_duplicates(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpP
 /// the cloud was a component its points were unexplained, so they started
 /// tracks; now they are clutter, and such a track has no evidence of its
 /// own. A target tracked from before those scans is older and kept, and so
-/// is a track already held_to_clutter_threshold: it was scored against a
-/// component there before (a component that died and is born again), and
-/// the rules for young tracks inside clutter decide it. Deleted tracks are
-/// counted in tracks_deleted.
+/// are tracks already scored against clutter there, which the rules for
+/// young tracks inside clutter decide: one held_to_clutter_threshold (a
+/// component there died and is born again) and one inside the gate of
+/// another live component (the new one was seeded in its tail). Deleted
+/// tracks are counted in tracks_deleted.
 template <class T, class Caps>
-void retire_tracks_in_new_component(TrackTable<T, Caps>& tracks, const CompSlot<T, Caps>& cs, std::size_t seed_scans,
-                                    std::size_t n, const MfbpParams<T>& p, TrackerCounters& counters) {
+void retire_tracks_in_new_component(TrackTable<T, Caps>& tracks, const ClutterTable<T, Caps>& cl, std::size_t slot,
+                                    std::size_t seed_scans, std::size_t n, const MfbpParams<T>& p,
+                                    TrackerCounters& counters) {
+  const CompSlot<T, Caps>& cs = cl.comps[slot];
   if (n == 0 || !cs.alive) return;
   const NormalWishart<T>& nw = cs.nws[n - 1];
   const model::Mahalanobis2<T> gate(nw.expected_covariance());
@@ -232,6 +251,7 @@ void retire_tracks_in_new_component(TrackTable<T, Caps>& tracks, const CompSlot<
     if (!t.alive || t.first >= n || t.age + (n - t.first) > seed_scans || held_to_clutter_threshold(t, p)) continue;
     const Vec2<T> z = model::polar_of_state(t.xs[n - 1]);
     if (gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > p.clutter_gate_chi2) continue;
+    if (in_other_component_gate(z, cl, slot, n - 1, p)) continue;
     t.alive = false;
     ++counters.tracks_deleted;
   }
