@@ -208,18 +208,21 @@ void suppress_duplicates(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpP
   }
 }
 
-/// Is measurement-space point z in the gate (clutter_gate_chi2 under E[D^-1])
-/// of a live component other than `slot` on window scan k?
+/// Is measurement-space point z = (range, azimuth) in the gate of a
+/// component's Normal-Wishart belief nw (Mahalanobis^2 <= chi2 under E[D^-1])?
+template <class T>
+bool in_component_gate(const Vec2<T>& z, const NormalWishart<T>& nw, T chi2) {
+  const model::Mahalanobis2<T> gate(nw.expected_covariance());
+  return gate.valid() && !(gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > chi2);
+}
+
+/// Is z in the gate (clutter_gate_chi2) of a live component other than
+/// `slot` on window scan k?
 template <class T, class Caps>
 bool in_other_component_gate(const Vec2<T>& z, const ClutterTable<T, Caps>& cl, std::size_t slot, std::size_t k,
                              const MfbpParams<T>& p) {
   for (std::size_t c = 0; c < ClutterTable<T, Caps>::kMaxComp; ++c) {
-    if (c == slot || !cl.comps[c].alive) continue;
-    const NormalWishart<T>& nw = cl.comps[c].nws[k];
-    const model::Mahalanobis2<T> gate(nw.expected_covariance());
-    if (gate.valid() && !(gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > p.clutter_gate_chi2)) {
-      return true;
-    }
+    if (c != slot && cl.comps[c].alive && in_component_gate(z, cl.comps[c].nws[k], p.clutter_gate_chi2)) return true;
   }
   return false;
 }
@@ -243,15 +246,13 @@ void retire_tracks_in_new_component(TrackTable<T, Caps>& tracks, const ClutterTa
                                     TrackerCounters& counters) {
   const CompSlot<T, Caps>& cs = cl.comps[slot];
   if (n == 0 || !cs.alive) return;
-  const NormalWishart<T>& nw = cs.nws[n - 1];
-  const model::Mahalanobis2<T> gate(nw.expected_covariance());
-  if (!gate.valid()) return;
   for (auto& t : tracks) {
     // Scans lived up to n - 1: the finalised ones (age) and its window scans.
     if (!t.alive || t.first >= n || t.age + (n - t.first) > seed_scans || held_to_clutter_threshold(t, p)) continue;
     const Vec2<T> z = model::polar_of_state(t.xs[n - 1]);
-    if (gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > p.clutter_gate_chi2) continue;
-    if (in_other_component_gate(z, cl, slot, n - 1, p)) continue;
+    if (!in_component_gate(z, cs.nws[n - 1], p.clutter_gate_chi2) || in_other_component_gate(z, cl, slot, n - 1, p)) {
+      continue;
+    }
     t.alive = false;
     ++counters.tracks_deleted;
   }
