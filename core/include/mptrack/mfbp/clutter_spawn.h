@@ -9,8 +9,6 @@
 // times the uniform expectation (and 2 points per pooled scan) seed a new
 // Normal-Wishart component (the prior of eq. (50)) with a CNR inverse gamma
 // (eq. (62)) and a Dirichlet weight (eq. (69)) from the points they hold.
-// The components born by the last spawn() are listed (born()) for
-// retire_tracks_in_new_component (track_management.h).
 #pragma once
 
 #include <array>
@@ -46,7 +44,6 @@ class ClutterSpawner {
              const TrackSpawner<T, Caps>& births, const MfbpParams<T>& p, const ModelConstants<T>& mc,
              std::uint32_t& next_id, TrackerCounters& counters) {
     MPTRACK_PROFILE_STAGE(g_mfbp, MfbpStage::kBirth);
-    born_count_ = 0;
     const std::size_t pool_first = (store.n_hist() + n > kMaxWindow) ? store.n_hist() + n - kMaxWindow : 0;
     const std::size_t pool_end = store.n_hist() + n;
     const std::size_t n_pool = pool_end - pool_first;
@@ -84,18 +81,8 @@ class ClutterSpawner {
       }
       start_component(cl.comps[slot], seed, n_pool, p, mc, next_id);
       ++counters.clutter_born;
-      born_[born_count_++] = NewComponent{slot, n_pool};
     }
   }
-
-  /// A component born by the last spawn(): its slot and the number of
-  /// stored scans, up to the newest, it was seeded from.
-  struct NewComponent {
-    std::size_t slot;
-    std::size_t seed_scans;
-  };
-  std::size_t born_count() const { return born_count_; }
-  const NewComponent& born(std::size_t i) const { return born_[i]; }
 
  private:
   struct Grid {
@@ -212,8 +199,6 @@ class ClutterSpawner {
   }
 
   SeedGrid<kGridCells> grid_{};
-  std::array<NewComponent, kMaxComp> born_{};
-  std::size_t born_count_ = 0;
   std::array<std::array<std::uint8_t, kMaxMeas>, kStore> pooled_{};  ///< seeding scratch
 };
 

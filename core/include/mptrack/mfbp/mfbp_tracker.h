@@ -283,12 +283,13 @@ class MfbpTracker {
     const std::uint64_t newest_index = finalized_ + n - 1;  // scan number of window scan n - 1
     mf_sweep(n);
     spawn_tracks(n);
+    const std::uint32_t first_new_component = next_comp_id_;
     if (estimate_clutter() && params_.clutter_birth) {
       clutter_spawner_.spawn(n, store_, clutter_, track_spawner_, params_, model_, next_comp_id_,
                              counters_);
     }
     mf_sweep(n);
-    if (estimate_clutter() && params_.clutter_birth && params_.retire_in_new_clutter) retire_explained_tracks(n);
+    if (estimate_clutter() && params_.clutter_birth && params_.retire_in_new_clutter) retire_explained_tracks(n, first_new_component);
     for (std::size_t l = 0; l < params_.mp_max_iterations; ++l) {
       T delta = T(0);
       for (std::size_t k = 0; k < n; ++k) {
@@ -316,13 +317,16 @@ class MfbpTracker {
     shift_window(finalize_count);
   }
 
-  // The tracks the components born by this window's spawn explain
-  // (mfbp::retire_tracks_in_new_component); after a sweep, so every track
-  // has a state on the newest window scan.
-  void retire_explained_tracks(std::size_t n) {
-    for (std::size_t i = 0; i < clutter_spawner_.born_count(); ++i) {
-      const auto& nc = clutter_spawner_.born(i);
-      mfbp::retire_tracks_in_new_component(tracks_, clutter_, nc.slot, nc.seed_scans, n, params_, counters_);
+  // The tracks the components born by this window's spawn (ids from
+  // first_new) explain (mfbp::retire_tracks_in_new_component); after a
+  // sweep, so every track has a state on the newest window scan. They were
+  // seeded from the stored scans up to the newest, at most kMaxWindow.
+  void retire_explained_tracks(std::size_t n, std::uint32_t first_new) {
+    const std::size_t stored = store_.n_hist() + n;
+    const std::size_t seed_scans = stored < kMaxWindow ? stored : kMaxWindow;
+    for (std::size_t c = 0; c < kMaxComp; ++c) {
+      if (!clutter_.comps[c].alive || clutter_.comps[c].id < first_new) continue;
+      mfbp::retire_tracks_in_new_component(tracks_, clutter_, c, seed_scans, n, params_, counters_);
     }
   }
 

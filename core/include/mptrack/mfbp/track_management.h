@@ -209,11 +209,10 @@ void suppress_duplicates(TrackTable<T, Caps>& tracks, std::size_t n, const MfbpP
 }
 
 /// Is measurement-space point z = (range, azimuth) in the gate of a
-/// component's Normal-Wishart belief nw (Mahalanobis^2 <= chi2 under E[D^-1])?
+/// component's Normal-Wishart belief nw (in_gaussian_gate under E[D^-1])?
 template <class T>
 bool in_component_gate(const Vec2<T>& z, const NormalWishart<T>& nw, T chi2) {
-  const model::Mahalanobis2<T> gate(nw.expected_covariance());
-  return gate.valid() && !(gate.distance2(z(0) - nw.mu(0), model::wrap_angle(z(1) - nw.mu(1))) > chi2);
+  return in_gaussian_gate(z(0), z(1), nw.mu, nw.expected_covariance(), chi2);
 }
 
 /// Is z in the gate (clutter_gate_chi2) of a live component other than

@@ -45,6 +45,14 @@ void for_each_gaussian_component(std::size_t k, std::uint64_t time_us, const Clu
   }
 }
 
+/// Is (r, az) within Mahalanobis^2 chi2 of a Gaussian of mean mu and
+/// covariance cov (a clutter component's gate under E[D^-1])?
+template <class T>
+bool in_gaussian_gate(T r, T az, const Vec2<T>& mu, const Mat2<T>& cov, T chi2) {
+  const model::Mahalanobis2<T> gate(cov);
+  return gate.valid() && !(gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > chi2);
+}
+
 /// Is (r, az) in the gate (clutter_gate_chi2 under E[D^-1]) of a Gaussian
 /// component whose mean total power E[1 + CNR] passes accept(power)?
 template <class T, class Caps, class Accept>
@@ -53,9 +61,7 @@ bool inside_component_gate(T r, T az, std::size_t k, std::uint64_t time_us, cons
   bool inside = false;
   const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T varsigma_c) {
     if (inside || !accept(varsigma_c)) return;
-    const model::Mahalanobis2<T> gate(cov);
-    if (!gate.valid()) return;
-    inside = !(gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > p.clutter_gate_chi2);
+    inside = in_gaussian_gate(r, az, mu, cov, p.clutter_gate_chi2);
   };
   for_each_gaussian_component(k, time_us, cl, p, consider);
   return inside;
