@@ -21,7 +21,7 @@ struct Entry {
 
 constexpr Entry kEntries[] = {
     {"mfbp", "MF-BP (MP-RMTT) window-7 smoother, slide 3, clutter estimated (seed 000); polar and OTHR scenarios (mfbp-* too: seed 001's Cartesian ones are refused)"},
-    {"mfbp-s1", "MF-BP window-7 smoother processing a window every scan (slide 1): births inside clutter confirmed ~3 scans sooner, 2-2.5x the mean compute"},
+    {"mfbp-s1", "MF-BP window-7 smoother processing a window every scan (slide 1), for hard clutter: births inside weaker clutter confirmed ~3 scans sooner, none under clutter of CNR above 6, 2-2.5x the mean compute"},
     {"mfbp-filter", "MF-BP online filter (window 1, one scan per step)"},
     {"mfbp-ki", "MF-BP ablation MP-RMTT-KI: kinematics only, no amplitude"},
     {"mfbp-nce", "MF-BP ablation MP-RMTT-NCE: uniform clutter of known rate, no estimation"},

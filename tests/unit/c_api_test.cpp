@@ -134,6 +134,8 @@ TEST_CASE("MF-BP with mptrack_mfbp_every_scan_params reports every_scan_smoother
   CHECK(d.confirm_lookahead_in_clutter == 0u);
   CHECK(e.slide == 1u);
   CHECK(e.confirm_lookahead_in_clutter == 2u);
+  CHECK(d.birth_in_clutter_max_cnr == 0.0f);
+  CHECK(e.birth_in_clutter_max_cnr == 6.0f);
   mptrack_counters c{};
   const std::vector<c_api_record> from_c = run_c(kCApiMfbpEveryScan, c);
   static mptrack::MfbpTracker<float, mptrack::DefaultCaps> tracker;

@@ -126,7 +126,7 @@ namespace {
 
 /// The filter on a known map with one dense component (30 per scan, CNR 4)
 /// at 30 km, 0.6 rad and no uniform clutter beyond the floor.
-MfbpParams<float> known_component_params(float single_point_tail, float max_cnr) {
+MfbpParams<float> known_component_params(float single_point_tail, float max_cnr, float cnr = 4.0f) {
   MfbpParams<float> p = filter_params();
   p.clutter_mode = ClutterMode::kKnownMap;
   p.known_clutter.uniform_rate_per_scan = 0.0f;
@@ -135,17 +135,17 @@ MfbpParams<float> known_component_params(float single_point_tail, float max_cnr)
   c.rate_per_scan = 30.0f;
   c.mean << 30000.0f, 0.6f;
   c.covariance << 500.0f * 500.0f, 0.0f, 0.0f, 0.05f * 0.05f;
-  c.cnr = 4.0f;
+  c.cnr = cnr;
   p.birth_single_point_tail = single_point_tail;
   p.birth_in_clutter_max_cnr = max_cnr;
   return p;
 }
 
-/// One scan: a single detection at the component's centre of amplitude m
-/// (birth_in_clutter_max_cnr: max_cnr, 0 = no limit).
-std::uint64_t births_after_one_point(float single_point_tail, float m, float max_cnr = 0.0f) {
+/// One scan: a single detection at the centre of a component of mean CNR
+/// cnr, of amplitude m (birth_in_clutter_max_cnr: max_cnr, 0 = no limit).
+std::uint64_t births_after_one_point(float single_point_tail, float m, float max_cnr = 0.0f, float cnr = 4.0f) {
   static MfbpTracker<float, PressureCaps<4>> trk;
-  REQUIRE(trk.init(known_component_params(single_point_tail, max_cnr)) == Status::kOk);
+  REQUIRE(trk.init(known_component_params(single_point_tail, max_cnr, cnr)) == Status::kOk);
   Scan<float, 16> scan;
   scan.time_us = 1000000u;
   Measurement<float> z;
@@ -176,4 +176,14 @@ TEST_CASE("mfbp birth inside clutter: no amplitude birth under a component stron
   CHECK(births_after_one_point(0.1f, 5.0f, 5.0f) == 1);
   CHECK(births_after_one_point(0.1f, 5.0f, 4.0f) == 1);
   CHECK(births_after_one_point(0.1f, 5.0f, 3.9f) == 0);
+}
+
+TEST_CASE("mfbp-s1's CNR limit keeps amplitude births under CNR-4 clutter and drops them under S2's CNR-6.67 chaff") {
+  const float limit = every_scan_smoother_params<float>().birth_in_clutter_max_cnr;
+  // m = 5 under CNR 6.67 (varsigma 7.67): tail exp(-(25 - 0.511) / 7.67) =
+  // 0.041 < 0.1, so without a limit the point starts a track alone.
+  CHECK(births_after_one_point(0.1f, 5.0f, 0.0f, 6.67f) == 1);
+  CHECK(births_after_one_point(0.1f, 5.0f, limit, 6.67f) == 0);
+  // Under CNR 4 (tail 0.0075, as above) the limit leaves the birth.
+  CHECK(births_after_one_point(0.1f, 5.0f, limit, 4.0f) == 1);
 }

@@ -405,13 +405,15 @@ TEST_CASE("mfbp young track in weaker clutter: lookahead 0 tests every window sc
   CHECK(tracks[0].confirmed);
 }
 
-TEST_CASE("mfbp every_scan_smoother_params: the defaults with slide 1 and lookahead 2, valid") {
+TEST_CASE("mfbp every_scan_smoother_params: the defaults with slide 1, lookahead 2 and CNR limit 6, valid") {
   const MfbpParams<double> d = seed000_default_params<double>();
   const MfbpParams<double> p = every_scan_smoother_params<double>();
   CHECK(d.slide == 3u);  // the paper's schedule stays the default
   CHECK(d.confirm_lookahead_in_clutter == 0u);
   CHECK(p.slide == 1u);
   CHECK(p.confirm_lookahead_in_clutter == 2u);
+  CHECK(d.birth_in_clutter_max_cnr == 0.0);
+  CHECK(p.birth_in_clutter_max_cnr == 6.0);
   CHECK(p.window_length == d.window_length);
   CHECK(p.confirm_threshold_in_clutter == d.confirm_threshold_in_clutter);
   CHECK(p.validate() == Status::kOk);

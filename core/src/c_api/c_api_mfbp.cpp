@@ -28,6 +28,7 @@ bool params_from_c(const mptrack_mfbp_params& c, Params& p) {
   p.window_length = c.window_length;
   p.slide = c.slide;
   p.confirm_lookahead_in_clutter = c.confirm_lookahead_in_clutter;
+  p.birth_in_clutter_max_cnr = c.birth_in_clutter_max_cnr;
   p.uniform_rate_per_scan = c.uniform_rate_per_scan;
   p.v_max_x_mps = c.v_max_x_mps;
   p.v_max_y_mps = c.v_max_y_mps;
@@ -63,6 +64,7 @@ void params_to_c(const Params& p, mptrack_mfbp_params* c) {
   c->window_length = static_cast<uint32_t>(p.window_length);
   c->slide = static_cast<uint32_t>(p.slide);
   c->confirm_lookahead_in_clutter = static_cast<uint32_t>(p.confirm_lookahead_in_clutter);
+  c->birth_in_clutter_max_cnr = p.birth_in_clutter_max_cnr;
   c->clutter_mode = MPTRACK_MFBP_CLUTTER_ESTIMATED_MAP;  // ClutterMode::kEstimatedMap, Params' default
   c->uniform_rate_per_scan = p.uniform_rate_per_scan;
   c->v_max_x_mps = p.v_max_x_mps;

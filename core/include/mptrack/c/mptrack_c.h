@@ -182,6 +182,8 @@ typedef struct mptrack_mfbp_params {
   uint32_t slide;             /* scans finalised per window, 1 <= slide <= window_length */
   uint32_t confirm_lookahead_in_clutter; /* later window scans a young track in weaker clutter
                                             needs on its confirming scan (0 = any scan) */
+  float birth_in_clutter_max_cnr; /* no amplitude birth under Gaussian clutter of mean CNR
+                                     above this, linear (0 = no limit) [-] */
   mptrack_mfbp_clutter_mode clutter_mode;
   float uniform_rate_per_scan;  /* known clutter rate (KNOWN_RATE_UNIFORM) [-] */
   float v_max_x_mps;          /* two-point birth gate [m/s] */
@@ -192,9 +194,10 @@ typedef struct mptrack_mfbp_params {
 
 void mptrack_mfbp_default_params(mptrack_mfbp_params* params);
 /* The "mfbp-s1" configuration (every_scan_smoother_params): the defaults with
- * a window processed every scan (slide 1) and confirm_lookahead_in_clutter 2:
- * births inside clutter are confirmed ~3 scans sooner for ~2.5x the mean
- * compute (docs/algorithms/mfbp.md, Window schedule). */
+ * a window processed every scan (slide 1), confirm_lookahead_in_clutter 2 and
+ * birth_in_clutter_max_cnr 6: births inside clutter are confirmed ~3 scans
+ * sooner for ~2.5x the mean compute (docs/algorithms/mfbp.md, Window
+ * schedule). */
 void mptrack_mfbp_every_scan_params(mptrack_mfbp_params* params);
 size_t mptrack_mfbp_size(void);
 size_t mptrack_mfbp_alignment(void);
