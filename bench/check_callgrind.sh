@@ -22,7 +22,7 @@ BASELINE=$ROOT/bench/callgrind_baseline.json
 THRESHOLD=2
 SCANS=60
 RECORD=0
-TRACKERS=(mfbp-filter mfbp gmphd gmcphd gnn)
+TRACKERS=(mfbp-filter mfbp mfbp-s1 gmphd gmcphd gnn)
 while [ $# -gt 0 ]; do
   case $1 in
     --record) RECORD=1 ;;
@@ -84,7 +84,11 @@ printf '%-12s %14s %14s %8s\n' tracker baseline now change
 for t in "${TRACKERS[@]}"; do
   now=${ir[$t]}
   # The per-scan block comes first in the file, so the first match is it.
-  base_per_scan=$(grep -m1 "\"$t\": " "$BASELINE" | sed 's/.*: \([0-9]*\).*/\1/')
+  base_per_scan=$(grep -m1 "\"$t\": " "$BASELINE" | sed 's/.*: \([0-9]*\).*/\1/' || true)
+  if [ -z "$base_per_scan" ]; then  # a tracker added after the baseline was recorded
+    printf '%-12s %14s %14d %8s  %s\n' "$t" "-" $((now / SCANS)) "-" "no baseline (--record)"
+    continue
+  fi
   base=$((base_per_scan * SCANS))
   pct=$(awk -v n="$now" -v b="$base" 'BEGIN { printf "%.2f", (n - b) * 100.0 / b }')
   verdict=ok

@@ -1,7 +1,7 @@
 // Fixed-work driver for callgrind instruction counts (bench/callgrind.sh).
 //
 //   mptrack-bench-scan <tracker> <scans>
-//     tracker: mfbp-filter | mfbp | gmphd | gmcphd | gnn   (float, DefaultCaps)
+//     tracker: mfbp-filter | mfbp | mfbp-s1 | gmphd | gmcphd | gnn   (float, DefaultCaps)
 //   mptrack-bench-scan profile <scans> <results.json>
 //     (a -DMPTRACK_PROFILE=ON build only) per-stage profile: MF-BP online
 //     filter and window-7 smoother on the first <scans> scans of S2, and
@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
     return profile_main(static_cast<std::uint32_t>(std::strtoul(argv[2], nullptr, 10)), argc == 4 ? argv[3] : "");
   }
   if (argc != 3) {
-    std::fprintf(stderr, "usage: %s mfbp-filter|mfbp|gmphd|gmcphd|gnn <scans>\n", argv[0]);
+    std::fprintf(stderr, "usage: %s mfbp-filter|mfbp|mfbp-s1|gmphd|gmcphd|gnn <scans>\n", argv[0]);
     return 2;
   }
   const std::string kind = argv[1];
@@ -177,6 +177,9 @@ int main(int argc, char** argv) {
   const scenario::ScenarioSpec spec = bench::seed000_s2();
   if (kind == "mfbp-filter") return drive<MfbpTracker<float>>(bench::mfbp_params_for<float>(spec, 1), spec, n);
   if (kind == "mfbp") return drive<MfbpTracker<float>>(bench::mfbp_params_for<float>(spec, 7), spec, n);
+  if (kind == "mfbp-s1") {
+    return drive<MfbpTracker<float>>(bench::mfbp_params_for<float>(spec, 7, every_scan_smoother_params<float>()), spec, n);
+  }
   if (kind == "gmphd") return drive<GmPhdFilter<float>>(bench::phd_params_for<float>(spec), spec, n);
   if (kind == "gmcphd") return drive<GmCphdFilter<float>>(bench::phd_params_for<float>(spec), spec, n);
   if (kind == "gnn") return drive<GnnTracker<float>>(bench::gnn_params_for<float>(spec), spec, n);

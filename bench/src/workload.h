@@ -71,10 +71,12 @@ std::vector<std::unique_ptr<Scan<T, N>>> generate_scans(const scenario::Scenario
 }
 
 /// MF-BP parameters for a polar scenario (as host-sim's mfbp adapter):
-/// window 1 = online filter, 7 = the paper's smoother (slide 3).
+/// window 1 = online filter, 7 = the smoother of `base` (the paper's, slide
+/// 3, unless base is every_scan_smoother_params(), mfbp-s1).
 template <class T>
-MfbpParams<T> mfbp_params_for(const scenario::ScenarioSpec& s, std::size_t window) {
-  MfbpParams<T> p = seed000_default_params<T>();
+MfbpParams<T> mfbp_params_for(const scenario::ScenarioSpec& s, std::size_t window,
+                              const MfbpParams<T>& base = seed000_default_params<T>()) {
+  MfbpParams<T> p = base;
   p.region.range_min_m = T(s.region.range_min_m);
   p.region.range_max_m = T(s.region.range_max_m);
   p.region.azimuth_min_rad = T(scenario::deg_to_rad(s.region.azimuth_min_deg));
