@@ -8,11 +8,7 @@
 namespace mptrack::sim {
 
 using json = nlohmann::ordered_json;
-using scenario::ClutterSpec;
-using scenario::MotionKind;
-using scenario::MotionSegment;
-using scenario::ScenarioSpec;
-using scenario::TargetSpec;
+namespace sc = scenario;
 
 namespace {
 
@@ -53,7 +49,7 @@ void pretty(std::ostream& out, const json& v, int indent) {
   out << v.dump();
 }
 
-json target_json(const TargetSpec& t, bool othr) {
+json target_json(const sc::TargetSpec& t, bool othr) {
   if (othr) {
     return {{"id", t.id},
             {"ground_state", t.ground_state},
@@ -66,19 +62,19 @@ json target_json(const TargetSpec& t, bool othr) {
             {"snr", t.snr},
             {"swerling", static_cast<int>(t.swerling)}};
   json motion = json::array();
-  for (const MotionSegment& m : t.motion) {
+  for (const sc::MotionSegment& m : t.motion) {
     json seg = {{"start_s", m.start_s}};
     switch (m.kind) {
-      case MotionKind::kConstantVelocity: seg["type"] = "cv"; break;
-      case MotionKind::kConstantAcceleration:
+      case sc::MotionKind::kConstantVelocity: seg["type"] = "cv"; break;
+      case sc::MotionKind::kConstantAcceleration:
         seg["type"] = "ca";
         seg["accel_mps2"] = m.accel_mps2;
         break;
-      case MotionKind::kCoordinatedTurn:
+      case sc::MotionKind::kCoordinatedTurn:
         seg["type"] = "ct";
         seg["turn_rate_deg_s"] = m.turn_rate_deg_s;
         break;
-      case MotionKind::kSetVelocity:
+      case sc::MotionKind::kSetVelocity:
         seg["type"] = "set_velocity";
         seg["velocity_mps"] = m.velocity_mps;
         break;
@@ -89,7 +85,7 @@ json target_json(const TargetSpec& t, bool othr) {
   return j;
 }
 
-json clutter_json(const ClutterSpec& c, bool cartesian) {
+json clutter_json(const sc::ClutterSpec& c, bool cartesian) {
   json j = {{"id", c.id}, {"type", c.uniform ? "uniform" : "gaussian"}, {"mean_count", c.mean_count}};
   if (!c.uniform && cartesian) {
     j["mean"] = {{"x_m", c.mean_x_m}, {"y_m", c.mean_y_m}};
@@ -100,15 +96,15 @@ json clutter_json(const ClutterSpec& c, bool cartesian) {
                    {"sigma_azimuth_deg", c.sigma_azimuth_deg},
                    {"correlation", c.correlation}};
   }
-  if (c.amplitude == scenario::ClutterAmplitude::kWeibull) {
+  if (c.amplitude == sc::ClutterAmplitude::kWeibull) {
     j["amplitude"] = {{"model", "weibull"}, {"shape", c.weibull_shape}, {"scale", c.weibull_scale}};
   } else {
     j["cnr"] = c.cnr;
     j["swerling"] = static_cast<int>(c.swerling);
   }
   j["lifetime"] = lifetime_json(c.birth_scan, c.death_scan);
-  const scenario::TimeVariation& v = c.variation;
-  if (!(v == scenario::TimeVariation{})) {
+  const sc::TimeVariation& v = c.variation;
+  if (!(v == sc::TimeVariation{})) {
     j["variation"] = {{"count_sin_amplitude", v.count_sin_amplitude},
                       {"cov_scale", {v.cov_scale_start, v.cov_scale_end}},
                       {"drift_range_mps", v.drift_range_mps},
@@ -119,15 +115,15 @@ json clutter_json(const ClutterSpec& c, bool cartesian) {
 
 }  // namespace
 
-json scenario_to_json(const ScenarioSpec& s) {
+json scenario_to_json(const sc::ScenarioSpec& s) {
   json doc = json::object();
   doc["schema"] = kScenarioSchema;
   doc["name"] = s.name;
   doc["description"] = s.description;
   doc["scans"] = s.num_scans;
   doc["scan_period_s"] = s.scan_period_s;
-  const bool cartesian = s.space == scenario::MeasurementSpace::kCartesian;
-  const bool othr = s.space == scenario::MeasurementSpace::kOthr;
+  const bool cartesian = s.space == sc::MeasurementSpace::kCartesian;
+  const bool othr = s.space == sc::MeasurementSpace::kOthr;
   if (cartesian) {
     doc["measurement_space"] = "cartesian";
     doc["region"] = {{"x_m", {s.xy_region.x_min_m, s.xy_region.x_max_m}},
@@ -142,7 +138,7 @@ json scenario_to_json(const ScenarioSpec& s) {
                                 {"sigma_azimuth_deg", s.sigma_azimuth_deg},
                                 {"sigma_range_rate_mps", s.othr.sigma_range_rate_mps}};
     json list = json::array();
-    for (const scenario::OthrPathSpec& p : s.othr.paths) {
+    for (const sc::OthrPathSpec& p : s.othr.paths) {
       list.push_back({{"name", p.name}, {"tx_height_km", p.tx_height_km}, {"rx_height_km", p.rx_height_km}, {"pd", p.pd}});
     }
     doc["paths"] = {{"baseline_km", s.othr.baseline_km}, {"list", list}};
@@ -154,15 +150,15 @@ json scenario_to_json(const ScenarioSpec& s) {
   doc["threshold"] = s.threshold;
   doc["evaluation"] = {{"first_scan", s.eval_first_scan}, {"last_scan", s.eval_last_scan}};
   json targets = json::array();
-  for (const TargetSpec& t : s.targets) targets.push_back(target_json(t, othr));
+  for (const sc::TargetSpec& t : s.targets) targets.push_back(target_json(t, othr));
   doc["targets"] = targets;
   json clut = json::array();
-  for (const ClutterSpec& c : s.clutter) clut.push_back(clutter_json(c, cartesian));
+  for (const sc::ClutterSpec& c : s.clutter) clut.push_back(clutter_json(c, cartesian));
   doc["clutter"] = clut;
   return doc;
 }
 
-void save_scenario_file(const ScenarioSpec& spec, const std::string& path) {
+void save_scenario_file(const sc::ScenarioSpec& spec, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw ScenarioError(path + ": cannot write file");
   pretty(out, scenario_to_json(spec), 0);

@@ -50,6 +50,15 @@ void put(Table& t, std::size_t i, std::uint32_t id, std::size_t born, double r) 
   for (auto& x : t[i].xs) x = Vec4<double>(r * std::cos(0.5), 0.0, r * std::sin(0.5), 0.0);
 }
 
+/// retire_tracks_in_new_component on t for the component in `slot` of cl,
+/// seeded from seed_scans scans, window of n scans; returns the deletions.
+std::uint64_t retire(Table& t, const Clutter& cl, std::size_t slot = 0, std::size_t seed_scans = 4, std::size_t n = 7,
+                     const MfbpParams<double>& p = MfbpParams<double>{}) {
+  TrackerCounters counters;
+  retire_tracks_in_new_component(t, cl, slot, seed_scans, n, p, counters);
+  return counters.tracks_deleted;
+}
+
 // A cloud of 4 points per scan from scan 10 in the seed grid cell [24, 26)
 // km x [30, 34) deg of the seed-000 region, at range offsets -750, -250,
 // 250, 750 m; the cross-range offset steps by 200 m from scan to scan
@@ -107,26 +116,21 @@ TEST_CASE("mfbp new clutter: with retire_in_new_clutter off those tracks live on
   CHECK(trk->live_tracks() == 4u);
 }
 
-
 TEST_CASE("mfbp new clutter: a track born on the component's scans inside its gate is deleted") {
   // Born on window scan 4 of 7: alive on scans 4..6, 3 <= 4 seed scans; at
   // the centre, d^2 = 0 < clutter_gate_chi2 (30).
   auto t = std::make_unique<Table>();
   put(*t, 0, 1, 4, 25000.0);
-  TrackerCounters n;
-  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, MfbpParams<double>{}, n);
+  CHECK(retire(*t, *table_with_new_component()) == 1u);
   CHECK_FALSE((*t)[0].alive);
-  CHECK(n.tracks_deleted == 1u);
 }
 
 TEST_CASE("mfbp new clutter: a track born before the component's scans is kept") {
   // Born on window scan 2 of 7: alive on 5 scans > 4 seed scans.
   auto t = std::make_unique<Table>();
   put(*t, 0, 1, 2, 25000.0);
-  TrackerCounters n;
-  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, MfbpParams<double>{}, n);
+  CHECK(retire(*t, *table_with_new_component()) == 0u);
   CHECK((*t)[0].alive);
-  CHECK(n.tracks_deleted == 0u);
 }
 
 TEST_CASE("mfbp new clutter: a young track already held to the in-clutter threshold is kept") {
@@ -139,10 +143,8 @@ TEST_CASE("mfbp new clutter: a young track already held to the in-clutter thresh
   MfbpParams<double> p;
   REQUIRE(p.tentative_predictive_in_clutter);
   REQUIRE(p.confirm_threshold_in_clutter > p.confirm_threshold);
-  TrackerCounters n;
-  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, p, n);
+  CHECK(retire(*t, *table_with_new_component(), 0, 4, 7, p) == 0u);
   CHECK((*t)[0].alive);
-  CHECK(n.tracks_deleted == 0u);
 }
 
 TEST_CASE("mfbp new clutter: finalised scans count toward a track's life") {
@@ -156,12 +158,10 @@ TEST_CASE("mfbp new clutter: finalised scans count toward a track's life") {
   (*t)[0].age = 3;
   (*t)[1].age = 6;
   (*t)[2].age = 7;
-  TrackerCounters n;
-  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 7, 1, MfbpParams<double>{}, n);
+  CHECK(retire(*t, *table_with_new_component(), 0, 7, 1) == 2u);
   CHECK_FALSE((*t)[0].alive);
   CHECK_FALSE((*t)[1].alive);
   CHECK((*t)[2].alive);
-  CHECK(n.tracks_deleted == 2u);
 }
 
 TEST_CASE("mfbp new clutter: a young track inside an older component's gate is kept") {
@@ -171,10 +171,8 @@ TEST_CASE("mfbp new clutter: a young track inside an older component's gate is k
   put(*t, 0, 1, 4, 25000.0);
   auto cl = table_with_new_component();
   cl->comps[1] = component();
-  TrackerCounters n;
-  retire_tracks_in_new_component(*t, *cl, 1, 4, 7, MfbpParams<double>{}, n);
+  CHECK(retire(*t, *cl, 1) == 0u);
   CHECK((*t)[0].alive);
-  CHECK(n.tracks_deleted == 0u);
 }
 
 TEST_CASE("mfbp new clutter: a young track just outside the component's gate is kept") {
@@ -183,9 +181,7 @@ TEST_CASE("mfbp new clutter: a young track just outside the component's gate is 
   const double edge_m = 1000.0 * std::sqrt(30.0);
   put(*t, 0, 1, 4, 25000.0 + 1.01 * edge_m);
   put(*t, 1, 2, 4, 25000.0 + 0.99 * edge_m);
-  TrackerCounters n;
-  retire_tracks_in_new_component(*t, *table_with_new_component(), 0, 4, 7, MfbpParams<double>{}, n);
+  CHECK(retire(*t, *table_with_new_component()) == 1u);
   CHECK((*t)[0].alive);
   CHECK_FALSE((*t)[1].alive);
-  CHECK(n.tracks_deleted == 1u);
 }

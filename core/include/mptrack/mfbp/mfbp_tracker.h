@@ -289,7 +289,10 @@ class MfbpTracker {
                              counters_);
     }
     mf_sweep(n);
-    if (estimate_clutter() && params_.clutter_birth && params_.retire_in_new_clutter) retire_explained_tracks(n, first_new_component);
+    // Only when this spawn made a component (ids are issued in birth order).
+    if (params_.retire_in_new_clutter && next_comp_id_ != first_new_component) {
+      retire_explained_tracks(n, first_new_component);
+    }
     for (std::size_t l = 0; l < params_.mp_max_iterations; ++l) {
       T delta = T(0);
       for (std::size_t k = 0; k < n; ++k) {

@@ -155,9 +155,7 @@ class TrackSpawner {
     bool gated = false;
     T tail_max = T(0);
     const auto consider = [&](const Vec2<T>& mu, const Mat2<T>& cov, T varsigma) {
-      const model::Mahalanobis2<T> gate(cov);
-      if (!gate.valid() || !(varsigma > T(0))) return;
-      if (gate.distance2(r - mu(0), model::wrap_angle(az - mu(1))) > p.clutter_gate_chi2) return;
+      if (!(varsigma > T(0)) || !in_gaussian_gate(r, az, mu, cov, p.clutter_gate_chi2)) return;
       gated = true;
       const bool too_strong = p.birth_in_clutter_max_cnr > T(0) && varsigma - T(1) > p.birth_in_clutter_max_cnr;
       const T tail = too_strong ? T(1) : amplitude_tail(m, d, varsigma, n_order);
