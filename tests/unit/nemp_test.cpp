@@ -71,6 +71,7 @@ void record(const Tracker& trk, std::vector<std::uint32_t>& out) {
 struct RunResult {
   std::vector<std::uint32_t> bits;
   std::uint64_t bp_runs = 0;
+  std::vector<std::size_t> reported;  ///< tracks per output estimate, in order
 };
 
 /// Window of run_scene(): 7 / 3 fills the store (kMaxWindow 7, no history
@@ -83,9 +84,9 @@ struct WindowShape {
 /// 30 scans of the seed 000 two-target scene (tests/unit/mfbp_scenario.h);
 /// nemp == nullptr: plain MF-BP; with_patches: every detection carries
 /// (zero) features, except on scans k with k % patchless_every == 0 (if
-/// patchless_every > 0).
+/// patchless_every > 0) and on scans k < patchless_before.
 RunResult run_scene(Nemp* nemp, bool with_patches, std::uint64_t* born = nullptr,
-                    WindowShape w = WindowShape{}, int patchless_every = 0) {
+                    WindowShape w = WindowShape{}, int patchless_every = 0, int patchless_before = 0) {
   auto trk = std::make_unique<Tracker>();
   MfbpParams<float> p = seed000_default_params<float>();
   p.window_length = w.length;
@@ -99,13 +100,16 @@ RunResult run_scene(Nemp* nemp, bool with_patches, std::uint64_t* born = nullptr
   RunResult r;
   for (int k = 0; k < 30; ++k) {
     mfbp_test::make_scan(rng, k, 10, *scan);
-    ev->has_patch.fill(with_patches && !(patchless_every > 0 && k % patchless_every == 0));
+    ev->has_patch.fill(with_patches && !(patchless_every > 0 && k % patchless_every == 0) &&
+                       k >= patchless_before);
     const Status s = nemp != nullptr ? trk->step(*scan, *ev) : trk->step(*scan);
     REQUIRE(s == Status::kOk);
     record(*trk, r.bits);
+    for (const auto& est : trk->outputs()) r.reported.push_back(est.tracks.size());
   }
   REQUIRE(trk->flush() == Status::kOk);
   record(*trk, r.bits);
+  for (const auto& est : trk->outputs()) r.reported.push_back(est.tracks.size());
   r.bp_runs = trk->bp_runs();
   if (born != nullptr) *born = trk->counters().tracks_born;
   return r;
@@ -125,7 +129,9 @@ struct FakeSlot {
   std::size_t count = 1;
   std::array<std::uint16_t, TestCaps::kMaxMeasurements> orig_index{};
   std::array<bool, TestCaps::kMaxMeasurements> vetoed{};
+  std::array<bool, TestCaps::kMaxMeasurements> tentative_vetoed{};
   void set_birth_vetoed(std::size_t c, bool on) { vetoed[c] = on; }
+  void set_tentative_vetoed(std::size_t c, bool on) { tentative_vetoed[c] = on; }
 };
 
 }  // namespace
@@ -147,13 +153,15 @@ TEST_CASE("NEMP off, no patches, or w = 0.5 everywhere: MF-BP output bit-identic
 }
 
 /// Settings of the sea kind (docs/algorithms/nemp.md §Sea settings): log-odds
-/// gain 2, birth veto at 0.5, the target side bounded at 0.5 (as the
-/// adapter ships them); neutrality must hold for any such values.
+/// gain 2, birth veto at 0.5 over the tentative life too, the target side
+/// bounded at 0.5 (as the adapter ships them); neutrality must hold for any
+/// such values.
 mfbp::NempParams<float> sea_like_params() {
   mfbp::NempParams<float> p;
   p.nn_log_odds_gain = 2.0f;
   p.nn_max_target_prob = 0.5f;
   p.birth_min_target_prob = 0.5f;
+  p.veto_tentative = true;
   return p;
 }
 
@@ -167,11 +175,13 @@ TEST_CASE("NEMP with the sea settings and w = 0.5 everywhere: MF-BP output bit-i
   CHECK(half.bp_runs == plain.bp_runs);
 }
 
-/// A NEMP state on the given head with the birth veto at 0.5.
-std::unique_ptr<Nemp> vetoing_nemp(const ConstantHead& head) {
+/// A NEMP state on the given head with the birth veto at 0.5 (and over the
+/// tentative life if veto_tentative).
+std::unique_ptr<Nemp> vetoing_nemp(const ConstantHead& head, bool veto_tentative = false) {
   auto nemp = std::make_unique<Nemp>();
   mfbp::NempParams<float> p;
   p.birth_min_target_prob = 0.5f;
+  p.veto_tentative = veto_tentative;
   REQUIRE(nemp->init(&head.classifier, p) == Status::kOk);
   return nemp;
 }
@@ -211,6 +221,64 @@ TEST_CASE("NEMP birth veto holds on history scans: a vetoed detection never beco
   auto nemp = vetoing_nemp(*clutterish);
   (void)run_scene(nemp.get(), true, &born_vetoed, short_window, kUnvetoedEvery);
   CHECK(born_vetoed == 0u);
+}
+
+TEST_CASE("NEMP tentative veto: set exactly on the detections the birth veto marks, only when asked") {
+  auto clutterish = std::make_unique<ConstantHead>(-3.0f);  // w = 0.047 < 0.5
+  FakeSlot slot;
+  slot.count = 2;
+  slot.orig_index[1] = 1;
+  auto ev = std::make_unique<Evidence>();
+  ev->has_patch[0] = true;  // input 1 has no patch: never vetoed
+  for (const bool asked : {false, true}) {
+    CAPTURE(asked);
+    auto nemp = vetoing_nemp(*clutterish, asked);
+    nemp->store_scan(0, slot, ev.get());
+    CHECK(slot.vetoed[0]);
+    CHECK_FALSE(slot.vetoed[1]);
+    CHECK(slot.tentative_vetoed[0] == asked);
+    CHECK_FALSE(slot.tentative_vetoed[1]);
+  }
+}
+
+/// Total tracks reported over the outputs from index `from` on.
+std::size_t reported_from(const RunResult& r, std::size_t from) {
+  std::size_t n = 0;
+  for (std::size_t i = from; i < r.reported.size(); ++i) n += r.reported[i];
+  return n;
+}
+
+TEST_CASE("NEMP tentative veto: a track born before the veto cannot confirm on vetoed detections") {
+  // Scans 0-2 carry no patch, so the two targets' two-point births happen
+  // (on scans 1-2); from scan 3 on every detection is vetoed. The soft fusion alone (gain 1, no
+  // bound) lets the young tracks take their targets' detections and
+  // confirm; with the veto over the tentative life they see only misses.
+  // w = 0.3: vetoed (< 0.5), clutter evidence x 7/3 in the soft fusion.
+  auto clutterish = std::make_unique<ConstantHead>(std::log(0.3f / 0.7f));
+  std::uint64_t born_soft = 0, born_hard = 0;
+  auto soft = vetoing_nemp(*clutterish, false);
+  const RunResult with_soft = run_scene(soft.get(), true, &born_soft, WindowShape{}, 0, 3);
+  auto hard = vetoing_nemp(*clutterish, true);
+  const RunResult with_hard = run_scene(hard.get(), true, &born_hard, WindowShape{}, 0, 3);
+  REQUIRE(born_soft > 0u);
+  CHECK(born_hard == born_soft);  // the births themselves are the same
+  CHECK(reported_from(with_soft, 0) > 0u);
+  CHECK(reported_from(with_hard, 0) == 0u);
+}
+
+TEST_CASE("NEMP tentative veto: confirmed tracks keep taking vetoed detections") {
+  // Scans 0-14 carry no patch (the two targets are confirmed there), then
+  // every detection is vetoed: the confirmed tracks must carry on to the
+  // end as they do without the tentative veto.
+  auto clutterish = std::make_unique<ConstantHead>(-3.0f);
+  auto soft = vetoing_nemp(*clutterish, false);
+  const RunResult with_soft = run_scene(soft.get(), true, nullptr, WindowShape{}, 0, 15);
+  auto hard = vetoing_nemp(*clutterish, true);
+  const RunResult with_hard = run_scene(hard.get(), true, nullptr, WindowShape{}, 0, 15);
+  REQUIRE(with_soft.reported.size() == with_hard.reported.size());
+  REQUIRE_FALSE(with_hard.reported.empty());
+  CHECK(with_hard.reported.back() == 2u);
+  CHECK(with_hard.reported.back() == with_soft.reported.back());
 }
 
 TEST_CASE("NEMP clutter side and gain: w above the bound is no evidence, the gain squares the odds") {

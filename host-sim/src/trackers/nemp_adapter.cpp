@@ -31,8 +31,8 @@ using Nemp = mfbp::NempState<double, DefaultCaps>;
 using Evidence = mfbp::ScanEvidence<DefaultCaps::kMaxMeasurements>;
 constexpr std::size_t kF = classify::kNumFeatures;
 
-/// `--mfbp-param nemp.NAME=VALUE` (rounds, nn_reliability,
-/// birth_min_target_prob); other names are MfbpParams' and skipped here.
+/// `--mfbp-param nemp.NAME=VALUE` (the NempParams fields); other names are
+/// MfbpParams' and skipped here.
 std::string apply_nemp_params(mfbp::NempParams<double>& np, const std::vector<std::string>& overrides) {
   for (const std::string& kv : overrides) {
     const std::size_t eq = kv.find('=');
@@ -52,8 +52,10 @@ std::string apply_nemp_params(mfbp::NempParams<double>& np, const std::vector<st
       np.nn_max_target_prob = v;
     } else if (name == "birth_min_target_prob") {
       np.birth_min_target_prob = v;
+    } else if (name == "veto_tentative" && (v == 0.0 || v == 1.0)) {
+      np.veto_tentative = v == 1.0;
     } else {
-      return "--mfbp-param nemp." + name + ": unknown or out of range (rounds 1..8, nn_reliability, nn_log_odds_gain, nn_max_target_prob, birth_min_target_prob)";
+      return "--mfbp-param nemp." + name + ": unknown or out of range (rounds 1..8, nn_reliability, nn_log_odds_gain, nn_max_target_prob, birth_min_target_prob, veto_tentative 0 or 1)";
     }
   }
   return "";

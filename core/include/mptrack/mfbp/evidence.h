@@ -346,6 +346,9 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
   for (std::size_t j = 0; j < s.count; ++j) {
     const Vec2<T> e(s.r[j] - z_hat(0), model::wrap_angle(s.az[j] - z_hat(1)));
     if (gate.distance2(e) > p.gate_chi2) continue;
+    // NEMP's veto over the tentative life (docs/algorithms/nemp.md §Birth):
+    // a detection the classifier calls clutter carries no unconfirmed track.
+    if (!t.confirmed && s.tentative_vetoed(j)) continue;
     // Young tracks inside weaker clutter (docs/algorithms/mfbp.md §Birth):
     // the predictive density N(y; z, Sz + R) = ln E[N(y; h(x), R)] instead
     // of the MF expectation E[ln N] of seed 000 eq. (79), whose

@@ -59,6 +59,12 @@ struct NempParams {
   /// detection without a patch, or w = 0.5 exactly, is never vetoed for
   /// values <= 0.5, so the neutral element stays neutral.
   T birth_min_target_prob = T(0);
+  /// The birth veto also covers a track's tentative life
+  /// (docs/algorithms/nemp.md §Birth, "Tentative tracks"): a vetoed
+  /// detection is left out of the association of every unconfirmed track,
+  /// as MP-NN's removal leaves it out; confirmed tracks keep the soft
+  /// fusion. No effect while birth_min_target_prob is 0.
+  bool veto_tentative = false;
 };
 
 template <class T>
@@ -102,8 +108,9 @@ class NempState {
 
   /// Evidence of the scan just stored at window index k: stored measurement
   /// c is input measurement orig_index[c]. ev == nullptr: no patches. The
-  /// birth veto goes into the slot (ScanSlot::kBirthVetoed), so it moves
-  /// into history with the scan.
+  /// birth veto goes into the slot (ScanSlot::kBirthVetoed, and
+  /// kTentativeVetoed with veto_tentative), so it moves into history with
+  /// the scan.
   template <class Slot>
   void store_scan(std::size_t k, Slot& s, const Evidence* ev) {
     for (std::size_t c = 0; c < s.count; ++c) {
@@ -111,7 +118,9 @@ class NempState {
       has_[k][c] = ev != nullptr && ev->has_patch[j];
       features_[k][c] = ev != nullptr ? ev->features[j] : classify::Features{};
       log_factor_[k][c] = T(0);
-      s.set_birth_vetoed(c, has_[k][c] && vetoes_birth(features_[k][c]));
+      const bool vetoed = has_[k][c] && vetoes_birth(features_[k][c]);
+      s.set_birth_vetoed(c, vetoed);
+      s.set_tentative_vetoed(c, vetoed && params_.veto_tentative);
     }
     // Belief record: input detection j starts at the uninformative 0.5
     // (detections refused at intake keep it).

@@ -46,8 +46,8 @@ struct ScanSlot {
   std::array<std::uint16_t, kMaxMeas> orig_index{};
   std::array<T, kMaxMeas> target_share{};   ///< sum_i a_hat^t_ij
   std::array<T, kMaxMeas> uniform_share{};  ///< a_hat^c_0j
-  /// Per measurement, bits kUsedByBirth | kBirthVetoed (one byte for both:
-  /// the veto must not grow plain MF-BP's footprint).
+  /// Per measurement, bits kUsedByBirth | kBirthVetoed | kTentativeVetoed
+  /// (one byte for all: the vetoes must not grow plain MF-BP's footprint).
   std::array<std::uint8_t, kMaxMeas> birth_flags{};
   std::array<std::uint16_t, kMaxMeas> by_range{};  ///< indices sorted by (range, index)
   std::array<NwStats<T>, kSources> nw_stats{};       ///< per source slot (0 = uniform)
@@ -63,11 +63,17 @@ struct ScanSlot {
   /// the slot so the veto follows the scan into history, where births take
   /// their first points (docs/algorithms/nemp.md §Birth).
   static constexpr std::uint8_t kBirthVetoed = 2;
+  /// NEMP (NempParams::veto_tentative): vetoed for births and kept out of
+  /// the association of every unconfirmed track as well (target_evidence;
+  /// docs/algorithms/nemp.md §Birth).
+  static constexpr std::uint8_t kTentativeVetoed = 4;
 
   bool used_by_birth(std::size_t j) const { return (birth_flags[j] & kUsedByBirth) != 0; }
   bool birth_vetoed(std::size_t j) const { return (birth_flags[j] & kBirthVetoed) != 0; }
+  bool tentative_vetoed(std::size_t j) const { return (birth_flags[j] & kTentativeVetoed) != 0; }
   void set_used_by_birth(std::size_t j, bool on) { set_flag(j, kUsedByBirth, on); }
   void set_birth_vetoed(std::size_t j, bool on) { set_flag(j, kBirthVetoed, on); }
+  void set_tentative_vetoed(std::size_t j, bool on) { set_flag(j, kTentativeVetoed, on); }
 
   void clear_source_stats() {
     for (std::size_t src = 0; src < kSources; ++src) {
