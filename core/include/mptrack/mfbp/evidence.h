@@ -204,11 +204,10 @@ bool track_moments(const TrackSlot<T, Caps>& t, std::size_t k, const ScanSlot<T,
                    TrackMoments<T>& mo) {
   Eigen::Matrix<T, 3, 1> z3;
   Eigen::Matrix<T, 3, 3> S3;
-  Eigen::Matrix<T, 4, 3> C3;
   Mat4<T> P_k = t.Ps[k].get();
-  if (!cubature_moments<T, 3>(t.xs[k], P_k, z3, S3, C3)) {
+  if (!cubature_measurement_moments<T, 3>(t.xs[k], P_k, z3, S3)) {
     note_repair(make_spd(P_k), counters);
-    if (!cubature_moments<T, 3>(t.xs[k], P_k, z3, S3, C3)) return false;
+    if (!cubature_measurement_moments<T, 3>(t.xs[k], P_k, z3, S3)) return false;
   }
   mo.z = z3.template head<2>();
   mo.Sz = S3.template topLeftCorner<2, 2>();

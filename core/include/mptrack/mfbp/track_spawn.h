@@ -200,8 +200,7 @@ class TrackSpawner {
                          Mat2<T>& S) {
     if (!t.alive || k < t.first) return false;
     Mat2<T> Sz;
-    Mat42<T> Cxz;
-    if (!cubature_polar_moments(t.xs[k], t.Ps[k].get(), z_hat, Sz, Cxz)) return false;
+    if (!cubature_measurement_moments<T, 2>(t.xs[k], t.Ps[k].get(), z_hat, Sz)) return false;
     S = Sz + mc.R;
     return true;
   }
