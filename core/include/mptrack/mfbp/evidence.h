@@ -126,11 +126,10 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
   }
   const model::InverseGamma<T>& ig0 = cl.uniform.igs[k];
   const T lu = log_rate + e_log_pi[0] - mc.log_volume + log_dop_clutter;
+  ExpectedAmplitudeLoglik<T> amp_loglik0(d, ig0.a, ig0.b, mc.n_order, p.amp_loglik);
   for (std::size_t j = 0; j < s.count; ++j) {
     T v = lu;
-    if (p.amplitude.use_amplitude) {
-      v += expected_amplitude_loglik(s.amp[j], d, ig0.a, ig0.b, mc.n_order, p.amp_loglik);
-    }
+    if (p.amplitude.use_amplitude) v += amp_loglik0(s.amp[j]);
     bp.set_clutter_log(0, j, v);
   }
   for (std::size_t q = 1; q < src.count; ++q) {
@@ -139,14 +138,13 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
     const model::InverseGamma<T>& ig = cs.igs[k];
     bp.set_clutter_absent(q, p.component_absent_evidence);
     const T base = log_rate + e_log_pi[q] + nw.expected_log_norm() + log_dop_clutter;
+    ExpectedAmplitudeLoglik<T> amp_loglik(d, ig.a, ig.b, mc.n_order, p.amp_loglik);
     for (std::size_t j = 0; j < s.count; ++j) {
       const Vec2<T> y(s.r[j], s.az[j]);
       const T em = nw.expected_mahalanobis(y);
       if (em - T(2) / nw.c > p.clutter_gate_chi2) continue;
       T v = base - T(0.5) * em;
-      if (p.amplitude.use_amplitude) {
-        v += expected_amplitude_loglik(s.amp[j], d, ig.a, ig.b, mc.n_order, p.amp_loglik);
-      }
+      if (p.amplitude.use_amplitude) v += amp_loglik(s.amp[j]);
       bp.set_clutter_log(q, j, v);
     }
   }
@@ -385,6 +383,11 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
   const Vec2<T>& z_hat = mo.z_shared;
   const T var_d = p.noise.doppler_std_mps * p.noise.doppler_std_mps;
   const T trace_term = (mc.R_inv * mo.Sz).trace();
+  // Per-track terms of the loop below, computed once (same operations).
+  const T log_det_gate = mo.predictive ? dmath::dlog(gate.det()) : T(0);
+  const T var_dop = var_d + mo.var_dop;
+  const T log_norm_dop = s.doppler ? -T(0.5) * (dmath::kLnTwoPi<T> + dmath::dlog(var_dop)) : T(0);
+  ExpectedAmplitudeLoglik<T> amp_loglik(p.amplitude.threshold, t.igs[k].a, t.igs[k].b, mc.n_order, p.amp_loglik);
   std::size_t dropped = 0;
   for (std::size_t j = 0; j < s.count; ++j) {
     const Vec2<T> e(s.r[j] - z_hat(0), model::wrap_angle(s.az[j] - z_hat(1)));
@@ -397,7 +400,7 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
     // measurement, so it never takes its target's detections; the same
     // reason as the Doppler row below.
     T v = mo.predictive
-              ? -dmath::kLnTwoPi<T> - T(0.5) * (dmath::dlog(gate.det()) + gate.distance2(e))
+              ? -dmath::kLnTwoPi<T> - T(0.5) * (log_det_gate + gate.distance2(e))
               : mc.log_norm_R - T(0.5) * (e.dot(mc.R_inv * e) + trace_term);
     if (s.doppler) {
       // Doppler is our choice (docs/algorithms/mfbp.md §Departures): the
@@ -406,13 +409,9 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
       // association of a young track (velocity spread >> sigma_d) and so
       // would never let it learn.
       const T ed = s.dop[j] - mo.z_dop;
-      const T var = var_d + mo.var_dop;
-      v += -T(0.5) * (dmath::kLnTwoPi<T> + dmath::dlog(var)) - T(0.5) * ed * ed / var;
+      v += log_norm_dop - T(0.5) * ed * ed / var_dop;
     }
-    if (p.amplitude.use_amplitude) {
-      v += expected_amplitude_loglik(s.amp[j], p.amplitude.threshold, t.igs[k].a, t.igs[k].b,
-                                     mc.n_order, p.amp_loglik);
-    }
+    if (p.amplitude.use_amplitude) v += amp_loglik(s.amp[j]);
     if (list.offer(v, j)) ++dropped;
   }
   return dropped;
