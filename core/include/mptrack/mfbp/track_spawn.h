@@ -86,6 +86,8 @@ class TrackSpawner {
   }
 
   /// Unexplained by the tracks at the last spawn() and not used by a birth.
+  /// Defined on the window scans, the scans without beliefs and the
+  /// birth_max_lag history scans before the window (mark_unexplained).
   bool unexplained(const Store& store, std::size_t si, std::size_t j) const {
     return unexplained_[si][j] != 0 && !store.at(si).used_by_birth(j);
   }
@@ -113,8 +115,13 @@ class TrackSpawner {
   void mark_unexplained(const Store& store, const Tracks& tracks, const ClutterTable<T, Caps>& cl,
                         const MfbpParams<T>& p, const ModelConstants<T>& mc) {
     const std::size_t k_ref = store.n_win() > 0 ? store.n_win() - 1 : 0;
+    // Older history scans are read by nobody: first points lie at most
+    // birth_max_lag scans before a window scan, and clutter seeding reads
+    // the mark only on scans without beliefs.
+    const std::size_t first_read = store.n_hist() > p.birth_max_lag ? store.n_hist() - p.birth_max_lag : 0;
     for (std::size_t si = 0; si < store.size(); ++si) {
       const ScanSlot<T, Caps>& s = store.at(si);
+      if (si < first_read && s.has_beliefs) continue;
       for (std::size_t j = 0; j < s.count; ++j) {
         bool u = !s.used_by_birth(j);
         std::uint8_t clutter = kExplained;
