@@ -252,6 +252,7 @@ class TrackSpawner {
     const T r2 = store.at(s2).r[j2];
     const T dt = dt_s<T>(a1.time_us, store.at(s2).time_us);
     const Vec2<T> p2 = model::cartesian_of_polar(r2, store.at(s2).az[j2]);
+    const T reach = birth_reach(dt, p.v_max_x_mps, p.v_max_y_mps);
     // Only first points within the range reach can pass the box gate
     // (birth_range_gate): start at the first one in range order, stop
     // after the last, so the search is O(log N + hits), not O(N).
@@ -259,7 +260,7 @@ class TrackSpawner {
     while (lo < hi) {
       const std::size_t mid = (lo + hi) / 2;
       if (a1.r[a1.by_range[mid]] < r2 &&
-          !birth_range_gate(a1.r[a1.by_range[mid]], r2, dt, p.v_max_x_mps, p.v_max_y_mps)) {
+          !within_birth_reach(a1.r[a1.by_range[mid]], r2, reach)) {
         lo = mid + 1;
       } else {
         hi = mid;
@@ -269,7 +270,7 @@ class TrackSpawner {
     std::size_t best_j = kMaxMeas;
     for (std::size_t q = lo; q < a1.count; ++q) {
       const std::size_t j1 = a1.by_range[q];
-      if (!birth_range_gate(a1.r[j1], r2, dt, p.v_max_x_mps, p.v_max_y_mps)) {
+      if (!within_birth_reach(a1.r[j1], r2, reach)) {
         if (a1.r[j1] > r2) break;  // beyond the reach: so is every later one
         continue;
       }
