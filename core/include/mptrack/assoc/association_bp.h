@@ -205,40 +205,44 @@ class AssociationBp {
   // all = false: coupled measurements only (inside the loop); true: every one.
   void measurement_side(bool all) {
     const std::size_t count = all ? nm_ : n_coupled_;
-    for (std::size_t q = 0; q < count; ++q) {
-      const std::size_t j = all ? q : coupled_[q];
-      std::size_t L = 0;
-      for (std::size_t k = meas_start_[j]; k < meas_start_[j + 1]; ++k) {
-        const std::size_t e = meas_edges_[k];
-        rho_[L++] = theta_e_[e] * eta_e_[e];
-      }
-      for (std::size_t a = act_start_[j]; a < act_start_[j + 1]; ++a) {
-        const std::size_t t = act_src_[a];
-        rho_[L++] = theta_c_[t][j] * (t == 0 ? T(1) : eta_c_[t][j]);
-      }
-      loo_sums(L);
-      S_[j] = prefix_[L];
-      std::size_t s = 0;
-      for (std::size_t k = meas_start_[j]; k < meas_start_[j + 1]; ++k, ++s) {
-        const std::size_t e = meas_edges_[k];
-        phi_e_[e] = safe_div(theta_e_[e], loo_[s]);
-      }
-      for (std::size_t a = act_start_[j]; a < act_start_[j + 1]; ++a, ++s) {
-        const std::size_t t = act_src_[a];
-        phi_c_[t][j] = safe_div(theta_c_[t][j], loo_[s]);
-        rho_c_[t][j] = rho_[s];
-      }
-    }
+    for (std::size_t q = 0; q < count; ++q) measurement_messages(all ? q : coupled_[q]);
   }
 
-  // loo_[k] = sum of rho_[0..L) except k, by prefix and suffix sums.
-  void loo_sums(std::size_t L) {
+  // One measurement's messages. Each leave-one-out sum is prefix + suffix
+  // (the same additions in the same order as a separate prefix, suffix and
+  // message pass), fused into a forward pass (rho and its prefix sums) and
+  // a backward pass (suffix sums and messages): fewer passes over the list.
+  // eta_c_[0][j] stays 1 (E^c of the uniform is off), so the uniform's rho
+  // is theta * 1 = theta exactly, as before.
+  void measurement_messages(std::size_t j) {
+    const std::size_t e_begin = meas_start_[j], e_end = meas_start_[j + 1];
+    const std::size_t a_begin = act_start_[j], a_end = act_start_[j + 1];
+    std::size_t L = 0;
     prefix_[0] = T(0);
-    for (std::size_t k = 0; k < L; ++k) prefix_[k + 1] = prefix_[k] + rho_[k];
+    for (std::size_t k = e_begin; k < e_end; ++k, ++L) {
+      const std::size_t e = meas_edges_[k];
+      rho_[L] = theta_e_[e] * eta_e_[e];
+      prefix_[L + 1] = prefix_[L] + rho_[L];
+    }
+    for (std::size_t a = a_begin; a < a_end; ++a, ++L) {
+      const std::size_t t = act_src_[a];
+      rho_[L] = theta_c_[t][j] * eta_c_[t][j];
+      prefix_[L + 1] = prefix_[L] + rho_[L];
+    }
+    S_[j] = prefix_[L];
     T suffix = T(0);
-    for (std::size_t k = L; k-- > 0;) {
-      loo_[k] = prefix_[k] + suffix;
-      suffix += rho_[k];
+    for (std::size_t a = a_end; a-- > a_begin;) {
+      --L;
+      const std::size_t t = act_src_[a];
+      phi_c_[t][j] = safe_div(theta_c_[t][j], prefix_[L] + suffix);
+      rho_c_[t][j] = rho_[L];
+      suffix += rho_[L];
+    }
+    for (std::size_t k = e_end; k-- > e_begin;) {
+      --L;
+      const std::size_t e = meas_edges_[k];
+      phi_e_[e] = safe_div(theta_e_[e], prefix_[L] + suffix);
+      suffix += rho_[L];
     }
   }
 
@@ -247,13 +251,20 @@ class AssociationBp {
   T target_and_clutter_side(T damping) {
     T delta = T(0);
     for (std::size_t i = 0; i < nt_; ++i) {
-      std::size_t L = 0;
-      rho_[L++] = theta_t0_[i];  // phi^t_i0 = theta^t_i0
-      for (std::size_t e = edge_begin_[i]; e < edge_end_[i]; ++e) rho_[L++] = phi_e_[e];
-      loo_sums(L);
-      std::size_t s = 1;
-      for (std::size_t e = edge_begin_[i]; e < edge_end_[i]; ++e, ++s) {
-        const T fresh = safe_div(T(1), loo_[s]);
+      // Leave-one-out sums over [theta^t_i0 (= phi^t_i0), phi of the edges]
+      // as in measurement_messages(): a forward pass of prefix sums, then
+      // the edges backwards with the suffix sum (the missed entry's own
+      // leave-one-out sum is never used). delta is a max: order-free.
+      const std::size_t e_begin = edge_begin_[i], e_end = edge_end_[i];
+      prefix_[0] = T(0);
+      prefix_[1] = prefix_[0] + theta_t0_[i];
+      std::size_t L = 1;
+      for (std::size_t e = e_begin; e < e_end; ++e, ++L) prefix_[L + 1] = prefix_[L] + phi_e_[e];
+      T suffix = T(0);
+      for (std::size_t e = e_end; e-- > e_begin;) {
+        --L;
+        const T fresh = safe_div(T(1), prefix_[L] + suffix);
+        suffix += phi_e_[e];
         const T updated = damping * eta_e_[e] + (T(1) - damping) * fresh;
         const T d = updated > eta_e_[e] ? updated - eta_e_[e] : eta_e_[e] - updated;
         delta = d > delta ? d : delta;
@@ -343,7 +354,7 @@ class AssociationBp {
   std::array<std::uint16_t, MaxMeas> coupled_{};
   std::size_t n_coupled_ = 0;
   // scratch
-  std::array<T, kMaxList + MaxEdges> rho_{}, loo_{};
+  std::array<T, kMaxList + MaxEdges> rho_{};
   std::array<T, kMaxList + MaxEdges + 1> prefix_{};
 };
 

@@ -166,12 +166,19 @@ class Associator {
   /// detections (chaff-crossing: more breaks). The rest are marked
   /// (TrackSlot::predictive_evidence, for the confirmation threshold).
   void mark_predictive(Tracks& tracks, const ModelConstants<T>& mc, const MfbpParams<T>& p) {
+    // The confirmed tracks with moments, in slot order (the only ones tested).
+    std::array<std::uint16_t, kMaxTargets> held{};
+    std::size_t n_held = 0;
+    for (std::size_t b = 0; b < kMaxTargets; ++b) {
+      if (moments_[b].ok && tracks[b].confirmed) held[n_held++] = static_cast<std::uint16_t>(b);
+    }
     for (std::size_t a = 0; a < kMaxTargets; ++a) {
       TrackMoments<T>& ma = moments_[a];
       if (!ma.predictive) continue;
-      for (std::size_t b = 0; b < kMaxTargets && ma.predictive; ++b) {
+      for (std::size_t q = 0; q < n_held && ma.predictive; ++q) {
+        const std::size_t b = held[q];
         const TrackMoments<T>& mb = moments_[b];
-        if (b == a || !mb.ok || !tracks[b].confirmed) continue;
+        if (b == a) continue;
         const model::Mahalanobis2<T> dist(ma.Sz + mb.Sz + mc.R);
         if (!dist.valid()) continue;
         const Vec2<T> e(mb.z(0) - ma.z(0), model::wrap_angle(mb.z(1) - ma.z(1)));

@@ -126,11 +126,10 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
   }
   const model::InverseGamma<T>& ig0 = cl.uniform.igs[k];
   const T lu = log_rate + e_log_pi[0] - mc.log_volume + log_dop_clutter;
+  ExpectedAmplitudeLoglik<T> amp_loglik0(d, ig0.a, ig0.b, mc.n_order, p.amp_loglik);
   for (std::size_t j = 0; j < s.count; ++j) {
     T v = lu;
-    if (p.amplitude.use_amplitude) {
-      v += expected_amplitude_loglik(s.amp[j], d, ig0.a, ig0.b, mc.n_order, p.amp_loglik);
-    }
+    if (p.amplitude.use_amplitude) v += amp_loglik0(s.amp[j]);
     bp.set_clutter_log(0, j, v);
   }
   for (std::size_t q = 1; q < src.count; ++q) {
@@ -139,14 +138,13 @@ void estimated_clutter_evidence(Bp& bp, const ScanSlot<T, Caps>& s, std::size_t 
     const model::InverseGamma<T>& ig = cs.igs[k];
     bp.set_clutter_absent(q, p.component_absent_evidence);
     const T base = log_rate + e_log_pi[q] + nw.expected_log_norm() + log_dop_clutter;
+    ExpectedAmplitudeLoglik<T> amp_loglik(d, ig.a, ig.b, mc.n_order, p.amp_loglik);
     for (std::size_t j = 0; j < s.count; ++j) {
       const Vec2<T> y(s.r[j], s.az[j]);
       const T em = nw.expected_mahalanobis(y);
       if (em - T(2) / nw.c > p.clutter_gate_chi2) continue;
       T v = base - T(0.5) * em;
-      if (p.amplitude.use_amplitude) {
-        v += expected_amplitude_loglik(s.amp[j], d, ig.a, ig.b, mc.n_order, p.amp_loglik);
-      }
+      if (p.amplitude.use_amplitude) v += amp_loglik(s.amp[j]);
       bp.set_clutter_log(q, j, v);
     }
   }
@@ -204,11 +202,10 @@ bool track_moments(const TrackSlot<T, Caps>& t, std::size_t k, const ScanSlot<T,
                    TrackMoments<T>& mo) {
   Eigen::Matrix<T, 3, 1> z3;
   Eigen::Matrix<T, 3, 3> S3;
-  Eigen::Matrix<T, 4, 3> C3;
   Mat4<T> P_k = t.Ps[k].get();
-  if (!cubature_moments<T, 3>(t.xs[k], P_k, z3, S3, C3)) {
+  if (!cubature_measurement_moments<T, 3>(t.xs[k], P_k, z3, S3)) {
     note_repair(make_spd(P_k), counters);
-    if (!cubature_moments<T, 3>(t.xs[k], P_k, z3, S3, C3)) return false;
+    if (!cubature_measurement_moments<T, 3>(t.xs[k], P_k, z3, S3)) return false;
   }
   mo.z = z3.template head<2>();
   mo.Sz = S3.template topLeftCorner<2, 2>();
@@ -228,6 +225,41 @@ T unresolved_weight(T d2, T chi2, bool taper) {
   return u * u;
 }
 
+/// Residual e = z_b - z_a (azimuth wrapped) between two tracks' predicted
+/// measurements and its d^2 under Sz_a + Sz_b; false if that sum is not
+/// usable (then it is not usable for (b, a) either: the same matrix).
+template <class T>
+bool unresolved_distance2(const TrackMoments<T>& ma, const TrackMoments<T>& mb, Vec2<T>& e, T& d2) {
+  e = Vec2<T>(mb.z(0) - ma.z(0), model::wrap_angle(mb.z(1) - ma.z(1)));
+  const model::Mahalanobis2<T> dist(ma.Sz + mb.Sz);
+  if (!dist.valid()) return false;
+  d2 = dist.distance2(e);
+  return true;
+}
+
+/// True if the residual of (b, a) is exactly -e (e of (a, b)). The range
+/// difference always negates exactly; the wrapped azimuth does except at
+/// the +-pi cut, so it is checked. Then (b, a) has the same d^2 bits as
+/// (a, b): Sz_b + Sz_a = Sz_a + Sz_b, and distance2 multiplies the
+/// residual's components in pairs, so their signs cancel exactly.
+template <class T>
+bool mirrored_residual(const TrackMoments<T>& ma, const TrackMoments<T>& mb, const Vec2<T>& e) {
+  return model::wrap_angle(ma.z(1) - mb.z(1)) == -e(1);
+}
+
+/// Pairs (list positions qa < qb) that couple_unresolved must compute again
+/// from qb's side: coupled, or with a residual that is not mirrored. Every
+/// other pair tested from qa is uncoupled from qb as well, with the same bits.
+template <std::size_t N>
+class UnresolvedRecheck {
+ public:
+  void set(std::size_t qa, std::size_t qb) { bits_[(qa * N + qb) / 32] |= std::uint32_t{1} << ((qa * N + qb) % 32); }
+  bool get(std::size_t qa, std::size_t qb) const { return ((bits_[(qa * N + qb) / 32] >> ((qa * N + qb) % 32)) & 1u) != 0; }
+
+ private:
+  std::array<std::uint32_t, (N * N + 31) / 32> bits_{};
+};
+
 /// Our choice (docs/algorithms/mfbp.md §Departures): tracks whose
 /// predicted measurements are statistically indistinguishable,
 /// (z_a - z_b)^T (Sz_a + Sz_b)^-1 (z_a - z_b) < unresolved_chi2, score
@@ -246,23 +278,32 @@ T unresolved_weight(T d2, T chi2, bool taper) {
 /// outward pull that cancels the measurement's restoring pull (loop gain 1
 /// with eq. (79), 1 - K^2 even with the predictive density), and the tracks
 /// drift ~200 m apart (docs/results/seed000-s1.md). Each track still
-/// updates on its own pseudo-measurement. O(tracks^2) 2x2 tests per scan.
+/// updates on its own pseudo-measurement. O(tracks^2) 2x2 tests per scan,
+/// each uncoupled pair tested once (UnresolvedRecheck).
 template <class T, class Caps, std::size_t N>
 void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Caps>& tracks,
                        std::size_t k, const MfbpParams<T>& p) {
+  // The tracks with moments, in slot order (the others never take part).
+  std::array<std::uint16_t, N> live{};
+  std::size_t n_live = 0;
   for (std::size_t a = 0; a < N; ++a) {
+    if (moments[a].ok) live[n_live++] = static_cast<std::uint16_t>(a);
+  }
+  UnresolvedRecheck<N> recheck{};
+  for (std::size_t qa = 0; qa < n_live; ++qa) {
+    const std::size_t a = live[qa];
     TrackMoments<T>& ma = moments[a];
-    if (!ma.ok) continue;
     Vec2<T> sum = ma.z;
     T count = T(1);
     T nearest = p.unresolved_chi2;
-    for (std::size_t b = 0; b < N; ++b) {
+    for (std::size_t qb = 0; qb < n_live; ++qb) {
+      if (qb == qa || (qb < qa && !recheck.get(qb, qa))) continue;
+      const std::size_t b = live[qb];
       const TrackMoments<T>& mb = moments[b];
-      if (b == a || !mb.ok) continue;
-      const Vec2<T> e(mb.z(0) - ma.z(0), model::wrap_angle(mb.z(1) - ma.z(1)));
-      const model::Mahalanobis2<T> dist(ma.Sz + mb.Sz);
-      if (!dist.valid()) continue;
-      const T d2 = dist.distance2(e);
+      Vec2<T> e;
+      T d2;
+      if (!unresolved_distance2(ma, mb, e, d2)) continue;
+      if (qb > qa && (d2 < p.unresolved_chi2 || !mirrored_residual(ma, mb, e))) recheck.set(qa, qb);
       if (!(d2 < p.unresolved_chi2)) continue;
       const T w = unresolved_weight(d2, p.unresolved_chi2, p.unresolved_taper && tracks[a].confirmed);
       sum += w * Vec2<T>(ma.z(0) + e(0), ma.z(1) + e(1));
@@ -342,6 +383,11 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
   const Vec2<T>& z_hat = mo.z_shared;
   const T var_d = p.noise.doppler_std_mps * p.noise.doppler_std_mps;
   const T trace_term = (mc.R_inv * mo.Sz).trace();
+  // Per-track terms of the loop below, computed once (same operations).
+  const T log_det_gate = mo.predictive ? dmath::dlog(gate.det()) : T(0);
+  const T var_dop = var_d + mo.var_dop;
+  const T log_norm_dop = s.doppler ? -T(0.5) * (dmath::kLnTwoPi<T> + dmath::dlog(var_dop)) : T(0);
+  ExpectedAmplitudeLoglik<T> amp_loglik(p.amplitude.threshold, t.igs[k].a, t.igs[k].b, mc.n_order, p.amp_loglik);
   std::size_t dropped = 0;
   for (std::size_t j = 0; j < s.count; ++j) {
     const Vec2<T> e(s.r[j] - z_hat(0), model::wrap_angle(s.az[j] - z_hat(1)));
@@ -357,7 +403,7 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
     // measurement, so it never takes its target's detections; the same
     // reason as the Doppler row below.
     T v = mo.predictive
-              ? -dmath::kLnTwoPi<T> - T(0.5) * (dmath::dlog(gate.det()) + gate.distance2(e))
+              ? -dmath::kLnTwoPi<T> - T(0.5) * (log_det_gate + gate.distance2(e))
               : mc.log_norm_R - T(0.5) * (e.dot(mc.R_inv * e) + trace_term);
     if (s.doppler) {
       // Doppler is our choice (docs/algorithms/mfbp.md §Departures): the
@@ -366,13 +412,9 @@ std::size_t target_evidence(const TrackSlot<T, Caps>& t, const TrackMoments<T>& 
       // association of a young track (velocity spread >> sigma_d) and so
       // would never let it learn.
       const T ed = s.dop[j] - mo.z_dop;
-      const T var = var_d + mo.var_dop;
-      v += -T(0.5) * (dmath::kLnTwoPi<T> + dmath::dlog(var)) - T(0.5) * ed * ed / var;
+      v += log_norm_dop - T(0.5) * ed * ed / var_dop;
     }
-    if (p.amplitude.use_amplitude) {
-      v += expected_amplitude_loglik(s.amp[j], p.amplitude.threshold, t.igs[k].a, t.igs[k].b,
-                                     mc.n_order, p.amp_loglik);
-    }
+    if (p.amplitude.use_amplitude) v += amp_loglik(s.amp[j]);
     if (list.offer(v, j)) ++dropped;
   }
   return dropped;

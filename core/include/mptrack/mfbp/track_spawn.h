@@ -86,6 +86,8 @@ class TrackSpawner {
   }
 
   /// Unexplained by the tracks at the last spawn() and not used by a birth.
+  /// Defined on the window scans, the scans without beliefs and the
+  /// birth_max_lag history scans before the window (mark_unexplained).
   bool unexplained(const Store& store, std::size_t si, std::size_t j) const {
     return unexplained_[si][j] != 0 && !store.at(si).used_by_birth(j);
   }
@@ -113,8 +115,13 @@ class TrackSpawner {
   void mark_unexplained(const Store& store, const Tracks& tracks, const ClutterTable<T, Caps>& cl,
                         const MfbpParams<T>& p, const ModelConstants<T>& mc) {
     const std::size_t k_ref = store.n_win() > 0 ? store.n_win() - 1 : 0;
+    // Older history scans are read by nobody: first points lie at most
+    // birth_max_lag scans before a window scan, and clutter seeding reads
+    // the mark only on scans without beliefs.
+    const std::size_t first_read = store.n_hist() > p.birth_max_lag ? store.n_hist() - p.birth_max_lag : 0;
     for (std::size_t si = 0; si < store.size(); ++si) {
       const ScanSlot<T, Caps>& s = store.at(si);
+      if (si < first_read && s.has_beliefs) continue;
       for (std::size_t j = 0; j < s.count; ++j) {
         bool u = !s.used_by_birth(j);
         std::uint8_t clutter = kExplained;
@@ -200,8 +207,7 @@ class TrackSpawner {
                          Mat2<T>& S) {
     if (!t.alive || k < t.first) return false;
     Mat2<T> Sz;
-    Mat42<T> Cxz;
-    if (!cubature_polar_moments(t.xs[k], t.Ps[k].get(), z_hat, Sz, Cxz)) return false;
+    if (!cubature_measurement_moments<T, 2>(t.xs[k], t.Ps[k].get(), z_hat, Sz)) return false;
     S = Sz + mc.R;
     return true;
   }
@@ -246,6 +252,7 @@ class TrackSpawner {
     const T r2 = store.at(s2).r[j2];
     const T dt = dt_s<T>(a1.time_us, store.at(s2).time_us);
     const Vec2<T> p2 = model::cartesian_of_polar(r2, store.at(s2).az[j2]);
+    const T reach = birth_reach(dt, p.v_max_x_mps, p.v_max_y_mps);
     // Only first points within the range reach can pass the box gate
     // (birth_range_gate): start at the first one in range order, stop
     // after the last, so the search is O(log N + hits), not O(N).
@@ -253,7 +260,7 @@ class TrackSpawner {
     while (lo < hi) {
       const std::size_t mid = (lo + hi) / 2;
       if (a1.r[a1.by_range[mid]] < r2 &&
-          !birth_range_gate(a1.r[a1.by_range[mid]], r2, dt, p.v_max_x_mps, p.v_max_y_mps)) {
+          !within_birth_reach(a1.r[a1.by_range[mid]], r2, reach)) {
         lo = mid + 1;
       } else {
         hi = mid;
@@ -263,7 +270,7 @@ class TrackSpawner {
     std::size_t best_j = kMaxMeas;
     for (std::size_t q = lo; q < a1.count; ++q) {
       const std::size_t j1 = a1.by_range[q];
-      if (!birth_range_gate(a1.r[j1], r2, dt, p.v_max_x_mps, p.v_max_y_mps)) {
+      if (!within_birth_reach(a1.r[j1], r2, reach)) {
         if (a1.r[j1] > r2) break;  // beyond the reach: so is every later one
         continue;
       }
