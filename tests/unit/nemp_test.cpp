@@ -161,7 +161,7 @@ mfbp::NempParams<float> sea_like_params() {
   p.nn_log_odds_gain = 2.0f;
   p.nn_max_target_prob = 0.5f;
   p.birth_min_target_prob = 0.5f;
-  p.veto_tentative = true;
+  p.tentative_min_target_prob = 0.5f;
   return p;
 }
 
@@ -175,13 +175,13 @@ TEST_CASE("NEMP with the sea settings and w = 0.5 everywhere: MF-BP output bit-i
   CHECK(half.bp_runs == plain.bp_runs);
 }
 
-/// A NEMP state on the given head with the birth veto at 0.5 (and over the
-/// tentative life if veto_tentative).
-std::unique_ptr<Nemp> vetoing_nemp(const ConstantHead& head, bool veto_tentative = false) {
+/// A NEMP state on the given head with the birth veto at 0.5 (and the
+/// tentative veto at tentative_min).
+std::unique_ptr<Nemp> vetoing_nemp(const ConstantHead& head, float tentative_min = 0.0f) {
   auto nemp = std::make_unique<Nemp>();
   mfbp::NempParams<float> p;
   p.birth_min_target_prob = 0.5f;
-  p.veto_tentative = veto_tentative;
+  p.tentative_min_target_prob = tentative_min;
   REQUIRE(nemp->init(&head.classifier, p) == Status::kOk);
   return nemp;
 }
@@ -223,20 +223,25 @@ TEST_CASE("NEMP birth veto holds on history scans: a vetoed detection never beco
   CHECK(born_vetoed == 0u);
 }
 
-TEST_CASE("NEMP tentative veto: set exactly on the detections the birth veto marks, only when asked") {
-  auto clutterish = std::make_unique<ConstantHead>(-3.0f);  // w = 0.047 < 0.5
+TEST_CASE("NEMP tentative veto: set on the detections below its own threshold, never without a patch") {
+  // w = 0.3 at belief 0.5 (sigmoid of the constant head); birth veto at 0.5
+  auto head = std::make_unique<ConstantHead>(std::log(0.3f / 0.7f));
   FakeSlot slot;
   slot.count = 2;
   slot.orig_index[1] = 1;
   auto ev = std::make_unique<Evidence>();
   ev->has_patch[0] = true;  // input 1 has no patch: never vetoed
-  for (const bool asked : {false, true}) {
-    CAPTURE(asked);
-    auto nemp = vetoing_nemp(*clutterish, asked);
+  struct Case {
+    float threshold;
+    bool vetoed;
+  };
+  for (const Case c : {Case{0.0f, false}, Case{0.25f, false}, Case{0.5f, true}}) {
+    CAPTURE(c.threshold);
+    auto nemp = vetoing_nemp(*head, c.threshold);
     nemp->store_scan(0, slot, ev.get());
-    CHECK(slot.vetoed[0]);
+    CHECK(slot.vetoed[0]);  // the birth veto does not depend on it
     CHECK_FALSE(slot.vetoed[1]);
-    CHECK(slot.tentative_vetoed[0] == asked);
+    CHECK(slot.tentative_vetoed[0] == c.vetoed);
     CHECK_FALSE(slot.tentative_vetoed[1]);
   }
 }
@@ -256,9 +261,9 @@ TEST_CASE("NEMP tentative veto: a track born before the veto cannot confirm on v
   // w = 0.3: vetoed (< 0.5), clutter evidence x 7/3 in the soft fusion.
   auto clutterish = std::make_unique<ConstantHead>(std::log(0.3f / 0.7f));
   std::uint64_t born_soft = 0, born_hard = 0;
-  auto soft = vetoing_nemp(*clutterish, false);
+  auto soft = vetoing_nemp(*clutterish, 0.0f);
   const RunResult with_soft = run_scene(soft.get(), true, &born_soft, WindowShape{}, 0, 3);
-  auto hard = vetoing_nemp(*clutterish, true);
+  auto hard = vetoing_nemp(*clutterish, 0.5f);
   const RunResult with_hard = run_scene(hard.get(), true, &born_hard, WindowShape{}, 0, 3);
   REQUIRE(born_soft > 0u);
   CHECK(born_hard == born_soft);  // the births themselves are the same
@@ -271,9 +276,9 @@ TEST_CASE("NEMP tentative veto: confirmed tracks keep taking vetoed detections")
   // every detection is vetoed: the confirmed tracks must carry on to the
   // end as they do without the tentative veto.
   auto clutterish = std::make_unique<ConstantHead>(-3.0f);
-  auto soft = vetoing_nemp(*clutterish, false);
+  auto soft = vetoing_nemp(*clutterish, 0.0f);
   const RunResult with_soft = run_scene(soft.get(), true, nullptr, WindowShape{}, 0, 15);
-  auto hard = vetoing_nemp(*clutterish, true);
+  auto hard = vetoing_nemp(*clutterish, 0.5f);
   const RunResult with_hard = run_scene(hard.get(), true, nullptr, WindowShape{}, 0, 15);
   REQUIRE(with_soft.reported.size() == with_hard.reported.size());
   REQUIRE_FALSE(with_hard.reported.empty());

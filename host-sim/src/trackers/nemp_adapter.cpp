@@ -52,10 +52,10 @@ std::string apply_nemp_params(mfbp::NempParams<double>& np, const std::vector<st
       np.nn_max_target_prob = v;
     } else if (name == "birth_min_target_prob") {
       np.birth_min_target_prob = v;
-    } else if (name == "veto_tentative" && (v == 0.0 || v == 1.0)) {
-      np.veto_tentative = v == 1.0;
+    } else if (name == "tentative_min_target_prob") {
+      np.tentative_min_target_prob = v;
     } else {
-      return "--mfbp-param nemp." + name + ": unknown or out of range (rounds 1..8, nn_reliability, nn_log_odds_gain, nn_max_target_prob, birth_min_target_prob, veto_tentative 0 or 1)";
+      return "--mfbp-param nemp." + name + ": unknown or out of range (rounds 1..8, nn_reliability, nn_log_odds_gain, nn_max_target_prob, birth_min_target_prob, tentative_min_target_prob)";
     }
   }
   return "";

@@ -73,7 +73,7 @@ inline mfbp::NempParams<double> sea_nemp_params() {
   // §Birth, "Tentative tracks"): without it NEMP kept 0.3 more tracks per
   // run that never cover a target alive to confirmation on the vetoed plots
   // MP-NN removes (sea-a 0 dB, 120 runs: MOSPA 5.645 -> 5.487).
-  np.veto_tentative = true;
+  np.tentative_min_target_prob = 0.5;
   // The classifier's odds squared (temperature 1/2) and bounded at 0.5:
   // only the clutter side acts (clutter plots crowd the clutter band, where
   // the uniform clutter model is too thin); letting target-like clutter

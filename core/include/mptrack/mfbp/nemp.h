@@ -59,12 +59,13 @@ struct NempParams {
   /// detection without a patch, or w = 0.5 exactly, is never vetoed for
   /// values <= 0.5, so the neutral element stays neutral.
   T birth_min_target_prob = T(0);
-  /// The birth veto also covers a track's tentative life
-  /// (docs/algorithms/nemp.md §Birth, "Tentative tracks"): a vetoed
-  /// detection is left out of the association of every unconfirmed track,
-  /// as MP-NN's removal leaves it out; confirmed tracks keep the soft
-  /// fusion. No effect while birth_min_target_prob is 0.
-  bool veto_tentative = false;
+  /// A veto over a track's tentative life (docs/algorithms/nemp.md §Birth,
+  /// "Tentative tracks"): a detection whose classifier probability at
+  /// belief 0.5 (as for the birth veto) is below this value is left out of
+  /// the association of every unconfirmed track, as MP-NN's removal leaves
+  /// it out at 0.5; confirmed tracks keep the soft fusion. 0 = off; the
+  /// neutral element stays neutral for values <= 0.5.
+  T tentative_min_target_prob = T(0);
 };
 
 template <class T>
@@ -74,6 +75,7 @@ template <class T>
   if (!(p.nn_log_odds_gain > T(0) && p.nn_log_odds_gain <= T(16))) return Status::kInvalidArgument;
   if (!(p.nn_max_target_prob >= T(0.5) && p.nn_max_target_prob <= T(1))) return Status::kInvalidArgument;
   if (!(p.birth_min_target_prob >= T(0) && p.birth_min_target_prob <= T(1))) return Status::kInvalidArgument;
+  if (!(p.tentative_min_target_prob >= T(0) && p.tentative_min_target_prob <= T(1))) return Status::kInvalidArgument;
   return Status::kOk;
 }
 
@@ -108,9 +110,8 @@ class NempState {
 
   /// Evidence of the scan just stored at window index k: stored measurement
   /// c is input measurement orig_index[c]. ev == nullptr: no patches. The
-  /// birth veto goes into the slot (ScanSlot::kBirthVetoed, and
-  /// kTentativeVetoed with veto_tentative), so it moves into history with
-  /// the scan.
+  /// vetoes go into the slot (ScanSlot::kBirthVetoed, kTentativeVetoed), so
+  /// they move into history with the scan.
   template <class Slot>
   void store_scan(std::size_t k, Slot& s, const Evidence* ev) {
     for (std::size_t c = 0; c < s.count; ++c) {
@@ -118,9 +119,9 @@ class NempState {
       has_[k][c] = ev != nullptr && ev->has_patch[j];
       features_[k][c] = ev != nullptr ? ev->features[j] : classify::Features{};
       log_factor_[k][c] = T(0);
-      const bool vetoed = has_[k][c] && vetoes_birth(features_[k][c]);
-      s.set_birth_vetoed(c, vetoed);
-      s.set_tentative_vetoed(c, vetoed && params_.veto_tentative);
+      const T w = has_[k][c] ? target_prob_at_half(features_[k][c]) : T(0.5);
+      s.set_birth_vetoed(c, below(w, params_.birth_min_target_prob));
+      s.set_tentative_vetoed(c, below(w, params_.tentative_min_target_prob));
     }
     // Belief record: input detection j starts at the uninformative 0.5
     // (detections refused at intake keep it).
@@ -201,15 +202,18 @@ class NempState {
   }
 
  private:
-  /// Birth veto of one detection (NempParams::birth_min_target_prob): the
-  /// MLP at the uninformative belief 0.5, as MP-NN's removal, so the birth
-  /// test does not depend on the association state of the moment.
-  bool vetoes_birth(const classify::Features& h) const {
-    if (!(params_.birth_min_target_prob > T(0))) return false;
+  /// The classifier probability the vetoes test (birth_min_target_prob,
+  /// tentative_min_target_prob): the MLP at the uninformative belief 0.5,
+  /// prior-corrected, as MP-NN's removal, so a veto does not depend on the
+  /// association state of the moment. Not computed while both are off.
+  T target_prob_at_half(const classify::Features& h) const {
+    if (!(params_.birth_min_target_prob > T(0)) && !(params_.tentative_min_target_prob > T(0))) return T(0.5);
     const float w_raw = classifier_->target_probability(h, 0.5f);
-    const T w = static_cast<T>(classify::correct_training_prior(w_raw, prior_));
-    return w < params_.birth_min_target_prob;
+    return static_cast<T>(classify::correct_training_prior(w_raw, prior_));
   }
+
+  /// A veto at `threshold` (0 = off) holds for probabilities below it.
+  static bool below(T w, T threshold) { return threshold > T(0) && w < threshold; }
 
   const classify::SeaClassifier* classifier_ = nullptr;
   NempParams<T> params_{};

@@ -63,9 +63,9 @@ struct ScanSlot {
   /// the slot so the veto follows the scan into history, where births take
   /// their first points (docs/algorithms/nemp.md §Birth).
   static constexpr std::uint8_t kBirthVetoed = 2;
-  /// NEMP (NempParams::veto_tentative): vetoed for births and kept out of
-  /// the association of every unconfirmed track as well (target_evidence;
-  /// docs/algorithms/nemp.md §Birth).
+  /// NEMP (NempParams::tentative_min_target_prob): kept out of the
+  /// association of every unconfirmed track (target_evidence;
+  /// docs/algorithms/nemp.md §Birth, "Tentative tracks").
   static constexpr std::uint8_t kTentativeVetoed = 4;
 
   bool used_by_birth(std::size_t j) const { return (birth_flags[j] & kUsedByBirth) != 0; }
