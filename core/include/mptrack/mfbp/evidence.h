@@ -227,7 +227,7 @@ T unresolved_weight(T d2, T chi2, bool taper) {
 
 /// Residual e = z_b - z_a (azimuth wrapped) between two tracks' predicted
 /// measurements and its d^2 under Sz_a + Sz_b; false if that sum is not
-/// usable (then it is not usable for (b, a) either: the same matrix).
+/// usable.
 template <class T>
 bool unresolved_distance2(const TrackMoments<T>& ma, const TrackMoments<T>& mb, Vec2<T>& e, T& d2) {
   e = Vec2<T>(mb.z(0) - ma.z(0), model::wrap_angle(mb.z(1) - ma.z(1)));
@@ -236,29 +236,6 @@ bool unresolved_distance2(const TrackMoments<T>& ma, const TrackMoments<T>& mb, 
   d2 = dist.distance2(e);
   return true;
 }
-
-/// True if the residual of (b, a) is exactly -e (e of (a, b)). The range
-/// difference always negates exactly; the wrapped azimuth does except at
-/// the +-pi cut, so it is checked. Then (b, a) has the same d^2 bits as
-/// (a, b): Sz_b + Sz_a = Sz_a + Sz_b, and distance2 multiplies the
-/// residual's components in pairs, so their signs cancel exactly.
-template <class T>
-bool mirrored_residual(const TrackMoments<T>& ma, const TrackMoments<T>& mb, const Vec2<T>& e) {
-  return model::wrap_angle(ma.z(1) - mb.z(1)) == -e(1);
-}
-
-/// Pairs (list positions qa < qb) that couple_unresolved must compute again
-/// from qb's side: coupled, or with a residual that is not mirrored. Every
-/// other pair tested from qa is uncoupled from qb as well, with the same bits.
-template <std::size_t N>
-class UnresolvedRecheck {
- public:
-  void set(std::size_t qa, std::size_t qb) { bits_[(qa * N + qb) / 32] |= std::uint32_t{1} << ((qa * N + qb) % 32); }
-  bool get(std::size_t qa, std::size_t qb) const { return ((bits_[(qa * N + qb) / 32] >> ((qa * N + qb) % 32)) & 1u) != 0; }
-
- private:
-  std::array<std::uint32_t, (N * N + 31) / 32> bits_{};
-};
 
 /// Our choice (docs/algorithms/mfbp.md §Departures): tracks whose
 /// predicted measurements are statistically indistinguishable,
@@ -278,8 +255,8 @@ class UnresolvedRecheck {
 /// outward pull that cancels the measurement's restoring pull (loop gain 1
 /// with eq. (79), 1 - K^2 even with the predictive density), and the tracks
 /// drift ~200 m apart (docs/results/seed000-s1.md). Each track still
-/// updates on its own pseudo-measurement. O(tracks^2) 2x2 tests per scan,
-/// each uncoupled pair tested once (UnresolvedRecheck).
+/// updates on its own pseudo-measurement. O(tracks^2) 2x2 tests per scan
+/// over the tracks with moments.
 template <class T, class Caps, std::size_t N>
 void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Caps>& tracks,
                        std::size_t k, const MfbpParams<T>& p) {
@@ -289,7 +266,6 @@ void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Ca
   for (std::size_t a = 0; a < N; ++a) {
     if (moments[a].ok) live[n_live++] = static_cast<std::uint16_t>(a);
   }
-  UnresolvedRecheck<N> recheck{};
   for (std::size_t qa = 0; qa < n_live; ++qa) {
     const std::size_t a = live[qa];
     TrackMoments<T>& ma = moments[a];
@@ -297,13 +273,12 @@ void couple_unresolved(std::array<TrackMoments<T>, N>& moments, TrackTable<T, Ca
     T count = T(1);
     T nearest = p.unresolved_chi2;
     for (std::size_t qb = 0; qb < n_live; ++qb) {
-      if (qb == qa || (qb < qa && !recheck.get(qb, qa))) continue;
+      if (qb == qa) continue;
       const std::size_t b = live[qb];
       const TrackMoments<T>& mb = moments[b];
       Vec2<T> e;
       T d2;
       if (!unresolved_distance2(ma, mb, e, d2)) continue;
-      if (qb > qa && (d2 < p.unresolved_chi2 || !mirrored_residual(ma, mb, e))) recheck.set(qa, qb);
       if (!(d2 < p.unresolved_chi2)) continue;
       const T w = unresolved_weight(d2, p.unresolved_chi2, p.unresolved_taper && tracks[a].confirmed);
       sum += w * Vec2<T>(ma.z(0) + e(0), ma.z(1) + e(1));
